@@ -1,0 +1,19 @@
+// extern template declarations for what src/instantiations.cpp compiles once,
+// in the style of heyoka's HEYOKA_TAYLOR_ADAPTIVE_EXTERN_INST.
+#pragma once
+
+#include <viscor/exact_solutions.hpp>
+#include <viscor/scaling.hpp>
+
+#define VISCOR_TEMPLATES(PREFIX, Real)                                                                  \
+  PREFIX template std::optional<exact_result<Real>> exact_cor<Real>(const contact_law&, const Real&,    \
+                                                                     const Real&);                      \
+  PREFIX template scaled_parameters<Real> to_scaled<Real>(const contact_law&, const physical_parameters<Real>&);
+
+#define VISCOR_EXTERN_TEMPLATES(Real) VISCOR_TEMPLATES(extern, Real)
+
+#ifndef VISCOR_COMPILING_INSTANTIATIONS
+namespace viscor {
+VISCOR_FOR_EACH_REAL(VISCOR_EXTERN_TEMPLATES)
+}
+#endif

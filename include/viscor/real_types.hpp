@@ -1,0 +1,74 @@
+// The scalar types viscor is built and tested for, and precision queries that
+// work for each of them, including run-time-precision mpfr_float.
+#pragma once
+
+#include <viscor/config.hpp>
+
+#include <boost/math/tools/precision.hpp>
+#include <boost/multiprecision/cpp_bin_float.hpp>
+#if VISCOR_HAS_FLOAT128
+#include <boost/multiprecision/float128.hpp>
+#endif
+#if VISCOR_HAS_MPFR
+#include <boost/multiprecision/mpfr.hpp>
+#endif
+
+#include <cmath>
+#include <type_traits>
+
+namespace viscor {
+
+#if VISCOR_HAS_FLOAT128
+using quad = boost::multiprecision::float128;  ///< IEEE binary128, 113-bit significand
+#endif
+#if VISCOR_HAS_MPFR
+using mpfr_50 = boost::multiprecision::mpfr_float_50;
+using mpfr_100 = boost::multiprecision::mpfr_float_100;
+/// Precision chosen at run time (mpfr_float::default_precision or per value).
+using mpfr_real = boost::multiprecision::mpfr_float;
+#endif
+
+/// Binary digits of Real. NOTE: for run-time mpfr_float this reads the current
+/// default precision, so never cache it across precision changes.
+template <class Real>
+int binary_digits() {
+  return boost::math::tools::digits<Real>();
+}
+
+/// Decimal digits that Real carries in full (floor(binary * log10 2)).
+template <class Real>
+int decimal_digits() {
+  return static_cast<int>(static_cast<long long>(binary_digits<Real>()) * 30103 / 100000);
+}
+
+/// Machine epsilon of Real, computed in Real (never through double).
+template <class Real>
+Real epsilon() {
+  using std::ldexp;
+  return ldexp(Real(1), 1 - binary_digits<Real>());
+}
+
+/// True for types whose precision is fixed at compile time.
+template <class Real>
+constexpr bool has_fixed_precision() {
+#if VISCOR_HAS_MPFR
+  return !std::is_same_v<Real, mpfr_real>;
+#else
+  return true;
+#endif
+}
+
+}  // namespace viscor
+
+// X-macro over the scalar types compiled into libviscor (src/instantiations.cpp).
+#if VISCOR_HAS_FLOAT128
+#define VISCOR_FOR_EACH_QUAD(X) X(::viscor::quad)
+#else
+#define VISCOR_FOR_EACH_QUAD(X)
+#endif
+#if VISCOR_HAS_MPFR
+#define VISCOR_FOR_EACH_MPFR(X) X(::viscor::mpfr_50) X(::viscor::mpfr_100) X(::viscor::mpfr_real)
+#else
+#define VISCOR_FOR_EACH_MPFR(X)
+#endif
+#define VISCOR_FOR_EACH_REAL(X) X(double) X(long double) VISCOR_FOR_EACH_QUAD(X) VISCOR_FOR_EACH_MPFR(X)

@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Installs viscor's build and test dependencies from Debian 12 packages.
+# Idempotent: apt-get update runs once, and only when something is missing.
+# Run as root (or with sudo available) on a fresh Debian 12 machine.
+set -euo pipefail
+
+packages=(
+  build-essential cmake pkg-config git
+  libboost1.81-dev          # Boost.Math tanh-sinh/roots (1.74 is broken for mpfr; see README)
+  libmpfr-dev libgmp-dev    # arbitrary precision
+  libgtest-dev googletest   # unit tests
+  libbenchmark-dev          # Google Benchmark
+  libcli11-dev              # command line
+  nlohmann-json3-dev        # JSON output and sidecars
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+
+if [ "${#missing[@]}" -eq 0 ]; then
+  echo "install-deps: all ${#packages[@]} packages present"
+  exit 0
+fi
+
+SUDO=""
+[ "$(id -u)" -ne 0 ] && SUDO="sudo"
+echo "install-deps: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
