@@ -8,6 +8,7 @@
 #include <viscor/exceptions.hpp>
 #include <viscor/outcome.hpp>
 #include <viscor/parameters.hpp>
+#include <viscor/precision.hpp>
 #include <viscor/real_io.hpp>
 #include <viscor/real_types.hpp>
 #include <viscor/scaling.hpp>

@@ -1,0 +1,112 @@
+// Options and output shared by the subcommands: the contact law, the working
+// precision, and the two output forms (readable text, or one JSON object whose
+// field names match the API, numbers as full-precision decimal strings).
+#pragma once
+
+#include <viscor/contact_law.hpp>
+#include <viscor/exceptions.hpp>
+#include <viscor/precision.hpp>
+#include <viscor/real_io.hpp>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <string>
+#include <unistd.h>
+
+namespace viscor::cli {
+
+using json = nlohmann::ordered_json;
+
+/// --model NAME | --alpha A --beta B (exponents accept fractions: --alpha 3/2).
+struct law_options {
+  std::string model, alpha, beta;
+
+  void add_to(CLI::App& app) {
+    app.add_option("--model", model, "named contact law: linear, hertz_linear_damping, tsuji, kuwabara_kono, hunt_crossley");
+    app.add_option("--alpha", alpha, "stiffness exponent alpha >= 1 (decimal or fraction p/q)");
+    app.add_option("--beta", beta, "damping exponent beta >= 1 (decimal or fraction p/q)");
+  }
+
+  contact_law resolve() const {
+    if (!model.empty()) {
+      if (!alpha.empty() || !beta.empty())
+        throw invalid_parameter("give either --model or --alpha/--beta, not both (got --model " + model + ")");
+      return law_by_name(model);
+    }
+    if (alpha.empty() || beta.empty())
+      throw invalid_parameter("the contact law needs --model NAME, or both --alpha and --beta");
+    return make_law(exponent::parse(alpha, "alpha"), exponent::parse(beta, "beta"));
+  }
+};
+
+/// --json and --output FILE. Output goes to the file only once the command has
+/// succeeded (written to a temporary and renamed), so a failed run leaves none.
+struct output_options {
+  bool json = false;
+  std::string path;
+
+  void add_to(CLI::App& app) {
+    app.add_flag("--json", json, "print one JSON object instead of the readable summary");
+    app.add_option("-o,--output", path, "write the output to FILE instead of standard output");
+  }
+
+  void emit(const std::string& text, const cli::json& object) const {
+    const std::string body = json ? object.dump(2) + "\n" : text;
+    if (path.empty()) {
+      std::cout << body << std::flush;
+      return;
+    }
+    write_atomically(path, body);
+  }
+
+  static void write_atomically(const std::string& path, const std::string& body) {
+    const std::string temporary = path + ".tmp." + std::to_string(::getpid());
+    {
+      std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+      if (!out) throw error("cannot write output file '" + path + "'");
+      out << body;
+      out.flush();
+      if (!out) {
+        std::remove(temporary.c_str());
+        throw error("writing output file '" + path + "' failed");
+      }
+    }
+    std::error_code ec;
+    std::filesystem::rename(temporary, path, ec);
+    if (ec) {
+      std::remove(temporary.c_str());
+      throw error("cannot move output into '" + path + "': " + ec.message());
+    }
+  }
+};
+
+/// A Real as a JSON string at full working precision.
+template <class Real>
+std::string number(const Real& x) {
+  return to_decimal_string(x);
+}
+
+/// Law description for JSON.
+inline json law_json(const contact_law& law) {
+  json j;
+  j["name"] = law.name;
+  j["alpha"] = law.alpha.to_string();
+  j["beta"] = law.beta.to_string();
+  return j;
+}
+
+/// The name and precision of the scalar type in use.
+template <class Real>
+json scalar_json() {
+  json j;
+  j["digits"] = decimal_digits<Real>();
+  j["binary_digits"] = binary_digits<Real>();
+  return j;
+}
+
+}  // namespace viscor::cli

@@ -1,0 +1,98 @@
+// Shared test helpers: the scalar types under test and comparisons carried out
+// in the type itself (EXPECT_NEAR would narrow long double, float128 and MPFR to double).
+#pragma once
+
+#include <viscor/real_io.hpp>
+#include <viscor/real_types.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace viscor::test {
+
+/// Fixed-precision scalar types every numerical test runs over.
+using all_real_types = ::testing::Types<double, long double
+#if VISCOR_HAS_FLOAT128
+                                        , quad
+#endif
+#if VISCOR_HAS_MPFR
+                                        , mpfr_50, mpfr_100
+#endif
+                                        >;
+
+/// Relative difference |a - b| / |b| (absolute when b = 0), in Real.
+template <class Real>
+Real relative_difference(const Real& a, const Real& b) {
+  using std::abs;
+  return b == 0 ? Real(abs(a)) : Real(abs(a - b) / abs(b));
+}
+
+/// Decimal digits on which a and b agree: -log10 of their relative difference.
+template <class Real>
+double agreeing_digits(const Real& a, const Real& b) {
+  using std::log10;
+  const Real d = relative_difference(a, b);
+  if (d == 0) return decimal_digits<Real>() + 1.0;
+  return static_cast<double>(-log10(d));
+}
+
+/// EXPECT_PRED_FORMAT3(relative_close, actual, expected, tolerance): |a - e| <= tol |e|.
+template <class Real>
+::testing::AssertionResult relative_close(const char* a_expr, const char* e_expr, const char*, const Real& a,
+                                          const Real& e, const Real& tol) {
+  const Real d = relative_difference(a, e);
+  if (d <= tol) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << a_expr << " = " << to_decimal_string(a) << "\n  vs " << e_expr << " = "
+                                       << to_decimal_string(e) << "\n  relative difference " << to_decimal_string(d, 4)
+                                       << " > tolerance " << to_decimal_string(tol, 4);
+}
+
+/// EXPECT_PRED_FORMAT3(absolute_close, actual, expected, tolerance): |a - e| <= tol.
+template <class Real>
+::testing::AssertionResult absolute_close(const char* a_expr, const char* e_expr, const char*, const Real& a,
+                                          const Real& e, const Real& tol) {
+  using std::abs;
+  const Real d = abs(a - e);
+  if (d <= tol) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << a_expr << " = " << to_decimal_string(a) << "\n  vs " << e_expr << " = "
+                                       << to_decimal_string(e) << "\n  absolute difference " << to_decimal_string(d, 4)
+                                       << " > tolerance " << to_decimal_string(tol, 4);
+}
+
+/// Converts x exactly into the reference type (through a round-trip decimal string).
+template <class To, class From>
+To convert(const From& x) {
+  return parse_real<To>(to_decimal_string(x, roundtrip_digits<From>() + 2), "converted value");
+}
+
+/// Result of running the viscor CLI: exit status and both streams.
+struct cli_run {
+  int status = -1;
+  std::string out, err;
+};
+
+/// Runs `viscor ARGS` (VISCOR_CLI_PATH, set by CMake) and captures its output.
+inline cli_run run_cli(const std::string& args) {
+  const std::string dir = ::testing::TempDir();
+  const std::string out = dir + "viscor_cli_out.txt", err = dir + "viscor_cli_err.txt";
+  const std::string command = std::string(VISCOR_CLI_PATH) + " " + args + " > " + out + " 2> " + err;
+  cli_run r;
+  const int raw = std::system(command.c_str());
+  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  auto slurp = [](const std::string& path) {
+    std::ifstream in(path);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+  };
+  r.out = slurp(out), r.err = slurp(err);
+  return r;
+}
+
+}  // namespace viscor::test
