@@ -124,7 +124,7 @@ TYPED_TEST(ExactSolutions, LinearAgreesWithMatrixExponential) {
   };
   const point points[] = {{"1e-6", "0"},  {"0.1", "0"},   {"0.5", "0.05"}, {"0.1", "1"},   {"1.5", "1"},
                           {"1e-3", "10"}, {"0.05", "10"}, {"0.3", "-0.5"}, {"1.9", "0.2"}, {"3", "-0.5"},
-                          {"2", "-1"},    {"1e-6", "1000"}};
+                          {"2", "-1"},    {"1e-6", "1000"}, {"1000", "-0.9"}, {"1e-30", "1000"}, {"1e-9", "1000"}};
   for (const auto& p : points) {
     SCOPED_TRACE(std::string("gamma = ") + p.gamma + ", g = " + p.g);
     const Real gamma = parse_real<Real>(p.gamma, "gamma"), g = parse_real<Real>(p.g, "g");

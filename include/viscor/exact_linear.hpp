@@ -36,28 +36,32 @@ struct linear_oscillator {
     root_lambda = sqrt(abs(lambda));
   }
   bool underdamped() const { return lambda > 0; }
-  Real c(const Real& t) const {
+  // exp(-xi t) C(t) and exp(-xi t) S(t). NOTE: strongly overdamped, exp(-xi t)
+  // underflows while cosh(s t) overflows; there we use the two real roots
+  // r1 = -1/(xi + s), r2 = -(xi + s) of r^2 + 2 xi r + 1 = 0 instead.
+  Real damped_c(const Real& t) const {
     using std::cos;
     using std::cosh;
-    if (lambda > 0) return cos(root_lambda * t);
-    if (lambda < 0) return cosh(root_lambda * t);
-    return Real(1);
+    using std::exp;
+    if (lambda > 0) return exp(-xi * t) * cos(root_lambda * t);
+    if (lambda < 0 && root_lambda >= Real(1) / 2) return (exp(slow_root() * t) + exp(fast_root() * t)) / 2;
+    if (lambda < 0) return exp(-xi * t) * cosh(root_lambda * t);
+    return exp(-xi * t);
   }
-  Real s(const Real& t) const {
+  Real damped_s(const Real& t) const {
+    using std::exp;
     using std::sin;
     using std::sinh;
-    if (lambda > 0) return sin(root_lambda * t) / root_lambda;
-    if (lambda < 0) return sinh(root_lambda * t) / root_lambda;
-    return t;
+    if (lambda > 0) return exp(-xi * t) * sin(root_lambda * t) / root_lambda;
+    if (lambda < 0 && root_lambda >= Real(1) / 2)
+      return (exp(slow_root() * t) - exp(fast_root() * t)) / (2 * root_lambda);
+    if (lambda < 0) return exp(-xi * t) * sinh(root_lambda * t) / root_lambda;
+    return exp(-xi * t) * t;
   }
-  Real u(const Real& t) const {
-    using std::exp;
-    return g + exp(-xi * t) * (-g * c(t) + (1 - xi * g) * s(t));
-  }
-  Real du(const Real& t) const {
-    using std::exp;
-    return exp(-xi * t) * (c(t) + (g - xi) * s(t));
-  }
+  Real slow_root() const { return -1 / (xi + root_lambda); }
+  Real fast_root() const { return -(xi + root_lambda); }
+  Real u(const Real& t) const { return g - g * damped_c(t) + (1 - xi * g) * damped_s(t); }
+  Real du(const Real& t) const { return damped_c(t) + (g - xi) * damped_s(t); }
   // int_0^T u'^2 dt for lambda > 0: with omega = sqrt(lambda), K = (g - xi)/omega,
   // u'^2 = e^{-2 xi t} [(1+K^2)/2 + (1-K^2)/2 cos(2 omega t) + K sin(2 omega t)].
   Real dissipation_integral(const Real& T) const {
@@ -138,10 +142,18 @@ exact_result<Real> exact_linear(const Real& gamma, const Real& g) {
   r.e = -du(tf);
   if (gamma == 0) {
     r.e = 1, r.one_minus_e = 0;  // energy is conserved exactly
+  } else if (g == 0 && osc.underdamped()) {
+    r.e = exp(-osc.xi * tf);
+    r.one_minus_e = -expm1(Real(-osc.xi * tf));
   } else if (osc.underdamped()) {
-    const Real one_minus_e2 = 2 * gamma * osc.dissipation_integral(tf);
-    r.one_minus_e = g == 0 ? Real(-expm1(Real(-osc.xi * tf))) : Real(one_minus_e2 / (1 + r.e));
-    if (g == 0) r.e = exp(-osc.xi * tf);
+    // NOTE: u'(T_f) carries the cancellation of terms of size g (and T_f an error
+    // ~ eps g / e), so for large g it loses log10(g) digits. The dissipated
+    // energy D = 1 - e^2 is insensitive to T_f (dD/dT_f = 2 gamma e^2); while
+    // D <= 1/2, sqrt(1 - D) gives e to full precision.
+    using std::sqrt;
+    const Real dissipated = 2 * gamma * osc.dissipation_integral(tf);
+    if (dissipated <= Real(1) / 2) r.e = sqrt(1 - dissipated);
+    r.one_minus_e = dissipated / (1 + r.e);
   } else {
     r.one_minus_e = 1 - r.e;  // gamma >= 2: e is far from 1, no cancellation
   }

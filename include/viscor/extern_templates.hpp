@@ -4,11 +4,14 @@
 
 #include <viscor/exact_solutions.hpp>
 #include <viscor/scaling.hpp>
+#include <viscor/solve_impact.hpp>
 
 #define VISCOR_TEMPLATES(PREFIX, Real)                                                                  \
   PREFIX template std::optional<exact_result<Real>> exact_cor<Real>(const contact_law&, const Real&,    \
                                                                      const Real&);                      \
-  PREFIX template scaled_parameters<Real> to_scaled<Real>(const contact_law&, const physical_parameters<Real>&);
+  PREFIX template scaled_parameters<Real> to_scaled<Real>(const contact_law&, const physical_parameters<Real>&); \
+  PREFIX template impact_result<Real> solve_impact<Real>(const contact_law&, const Real&, const Real&,          \
+                                                         const solve_options<Real>&);
 
 #define VISCOR_EXTERN_TEMPLATES(Real) VISCOR_TEMPLATES(extern, Real)
 

@@ -12,4 +12,5 @@
 #include <viscor/real_io.hpp>
 #include <viscor/real_types.hpp>
 #include <viscor/scaling.hpp>
+#include <viscor/solve_impact.hpp>
 #include <viscor/extern_templates.hpp>

@@ -1,0 +1,217 @@
+// The impact ODE  u' = v,  v' = g - u^alpha - gamma beta u^(beta-1) v  (u > 0),
+// with the dissipated energy D' = 2 gamma beta u^(beta-1) v^2 (eq. 6) carried
+// along, as two Taylor systems for taylor_integrator:
+//
+// time_system: independent variable tau, states (u, v, D). Needs u > 0: the
+//   power recurrences for u^alpha, u^beta divide by u(tau0).
+//
+// endpoint_system: independent variable sigma with u = phi(sigma) monotone, for
+//   the first and last part of the contact where u -> 0. States (v, tau, D):
+//     dtau/dsigma = J / v,
+//     dv/dsigma   = (g J - u^alpha J) / v - gamma beta u^(beta-1) J,
+//     dD/dsigma   = 2 gamma beta u^(beta-1) J v,          J = du/dsigma.
+//   Two choices of phi make every known series analytic at u = 0:
+//   * rational exponents, Q = lcm of the denominators: u = s^Q. Then
+//     J = Q s^(Q-1), u^alpha J = Q s^(Q(alpha+1)-1), u^(beta-1) J = Q s^(Q beta-1)
+//     are polynomials, and s = 0 is a regular point of the system while v != 0:
+//     the impact starts and ends exactly there.
+//   * any real exponents: u = exp(sigma). The known series exp(lambda sigma) are
+//     entire; u = 0 moves to sigma = -infinity and the last gap [0, u_eps] is
+//     closed by the leading terms of the generalized (Puiseux) series of the
+//     solution (see taylor_impact.hpp).
+#pragma once
+
+#include <viscor/detail/taylor_series.hpp>
+#include <viscor/taylor_integrator.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+namespace viscor::detail {
+
+/// Constants of one impact, converted once to Real.
+template <class Real>
+struct impact_constants {
+  Real alpha, beta, gamma, g;
+  Real alpha_plus_one, beta_plus_one;
+  Real gamma_beta, two_gamma, two_gamma_beta;
+  bool alpha_equals_beta = false;
+  bool beta_is_one = false;
+  // u = s^Q variable (rational exponents): integer exponents of the monomials.
+  bool use_root_variable = false;
+  long Q = 1, Q_alpha = 1, Q_beta = 1;
+};
+
+/// Step-control scale: |x0| for a quadrature kept to relative precision,
+/// max(1, |x0|) for a dynamic state.
+template <class Real>
+Real scale_of(bool relative, const Real& x0) {
+  using std::abs;
+  Real s = abs(x0);
+  if (!relative && s < 1) s = 1;
+  return s;
+}
+
+template <class Real>
+class time_system {
+ public:
+  enum : std::size_t { u = 0, v = 1, D = 2 };
+
+  time_system(const impact_constants<Real>& c, std::size_t order)
+      : m_c(c), m_A(order + 2), m_P(order + 2), m_dP(order + 2), m_ju(order + 2) {}
+
+  std::size_t size() const { return 3; }
+  // NOTE: D is controlled relative to itself: for the linear law u, v are entire
+  // and only the truncation of v^2 (twice the frequency) limits the step.
+  Real step_scale(std::size_t i, const Real& x0) const { return scale_of(i == D, x0); }
+
+  void jet(const Real& /*tau0*/, taylor_jet<Real>& x) {
+    using std::pow;
+    const std::size_t p = x.order();
+    Real* U = x[u];
+    Real* V = x[v];
+    Real* E = x[D];
+    Real* A = m_A.data();
+    Real* P = m_P.data();
+    Real* dP = m_dP.data();
+    Real* ju = m_ju.data();
+    ju[0] = 0;
+    P[0] = m_c.beta_is_one ? U[0] : Real(pow(U[0], m_c.beta));
+    if (m_c.alpha_equals_beta) {
+      A = P;
+    } else {
+      A[0] = pow(U[0], m_c.alpha);
+    }
+    for (std::size_t k = 0; k < p; ++k) {
+      if (k > 0 && !m_c.alpha_equals_beta) real_power(A[k], m_scratch, m_c.alpha_plus_one, U, ju, A, k);
+      U[k + 1] = V[k];
+      U[k + 1] /= static_cast<long>(k + 1);
+      ju[k + 1] = V[k];
+      if (m_c.beta_is_one) {
+        P[k + 1] = U[k + 1];
+      } else {
+        real_power(P[k + 1], m_scratch, m_c.beta_plus_one, U, ju, P, k + 1);
+      }
+      dP[k] = P[k + 1];
+      dP[k] *= static_cast<long>(k + 1);
+      // v' = g - u^alpha - gamma (u^beta)'
+      m_t = dP[k];
+      m_t *= m_c.gamma;
+      V[k + 1] = A[k];
+      V[k + 1] += m_t;
+      V[k + 1] = -V[k + 1];
+      if (k == 0) V[k + 1] += m_c.g;
+      V[k + 1] /= static_cast<long>(k + 1);
+      // D' = 2 gamma v (u^beta)'
+      product(E[k + 1], V, dP, k);
+      E[k + 1] *= m_c.two_gamma;
+      E[k + 1] /= static_cast<long>(k + 1);
+    }
+  }
+
+ private:
+  const impact_constants<Real>& m_c;
+  std::vector<Real> m_A, m_P, m_dP, m_ju;
+  Real m_scratch, m_t;
+};
+
+template <class Real>
+class endpoint_system {
+ public:
+  enum : std::size_t { v = 0, tau = 1, D = 2 };
+
+  endpoint_system(const impact_constants<Real>& c, std::size_t order)
+      : m_c(c), m_order(order), m_J(order + 2), m_M(order + 2), m_L(order + 2), m_r(order + 2), m_tmp(order + 2) {
+    if (!c.use_root_variable) {
+      m_lambda_alpha = c.alpha_plus_one;
+      m_lambda_beta = c.beta;
+    }
+  }
+
+  std::size_t size() const { return 3; }
+  Real step_scale(std::size_t i, const Real& x0) const { return scale_of(i != v, x0); }
+
+  void jet(const Real& sigma0, taylor_jet<Real>& x) {
+    const std::size_t p = x.order();
+    fill_known_series(sigma0, p);
+    Real* V = x[v];
+    Real* T = x[tau];
+    Real* E = x[D];
+    Real* r = m_r.data();
+    r[0] = 1;
+    r[0] /= V[0];
+    for (std::size_t k = 0; k < p; ++k) {
+      if (k > 0) reciprocal(r[k], V, r, k);
+      const std::size_t lo_J = k > m_deg_J ? k - m_deg_J : 0;
+      const std::size_t lo_M = k > m_deg_M ? k - m_deg_M : 0;
+      // sum over j of J[k-j] r[j] with k - j <= deg J
+      convolution(T[k + 1], r, m_J.data(), k, lo_J, k);
+      T[k + 1] /= static_cast<long>(k + 1);
+      convolution(V[k + 1], r, m_M.data(), k, lo_M, k);
+      if (k <= m_deg_L) {
+        m_t = m_L[k];
+        m_t *= m_c.gamma_beta;
+        V[k + 1] -= m_t;
+      }
+      V[k + 1] /= static_cast<long>(k + 1);
+      const std::size_t lo_L = k > m_deg_L ? k - m_deg_L : 0;
+      convolution(E[k + 1], V, m_L.data(), k, lo_L, k);
+      E[k + 1] *= m_c.two_gamma_beta;
+      E[k + 1] /= static_cast<long>(k + 1);
+    }
+  }
+
+  /// u at sigma.
+  Real u_of(const Real& sigma) const {
+    using std::exp;
+    using std::pow;
+    if (m_c.use_root_variable) return pow(sigma, m_c.Q);
+    return exp(sigma);
+  }
+
+ private:
+  // J = du/dsigma, M = g J - u^alpha J, L = u^(beta-1) J about sigma0; deg_* are
+  // the polynomial degrees (order p for the exponential variable).
+  void fill_known_series(const Real& sigma0, std::size_t p) {
+    if (m_c.use_root_variable) {
+      const long Q = m_c.Q;
+      integer_power_of_linear(m_J, m_powers, sigma0, Q - 1, p);
+      integer_power_of_linear(m_tmp, m_powers, sigma0, Q * 1 + m_c.Q_alpha - 1, p);
+      integer_power_of_linear(m_L, m_powers, sigma0, m_c.Q_beta - 1, p);
+      m_deg_J = static_cast<std::size_t>(Q - 1);
+      m_deg_L = static_cast<std::size_t>(m_c.Q_beta - 1);
+      m_deg_M = static_cast<std::size_t>(std::max<long>(Q - 1, Q + m_c.Q_alpha - 1));
+      for (std::size_t j = 0; j <= p; ++j) {
+        m_J[j] *= Q;
+        m_L[j] *= Q;
+        m_M[j] = m_J[j];
+        m_M[j] *= m_c.g;
+        m_tmp[j] *= Q;
+        m_M[j] -= m_tmp[j];
+      }
+    } else {
+      exponential_of_linear(m_J, Real(1), sigma0, p);
+      exponential_of_linear(m_tmp, m_lambda_alpha, sigma0, p);
+      exponential_of_linear(m_L, m_lambda_beta, sigma0, p);
+      for (std::size_t j = 0; j <= p; ++j) {
+        m_M[j] = m_J[j];
+        m_M[j] *= m_c.g;
+        m_M[j] -= m_tmp[j];
+      }
+      m_deg_J = m_deg_M = m_deg_L = p;
+    }
+    m_deg_J = std::min(m_deg_J, p);
+    m_deg_M = std::min(m_deg_M, p);
+    m_deg_L = std::min(m_deg_L, p);
+  }
+
+  const impact_constants<Real>& m_c;
+  std::size_t m_order;
+  std::vector<Real> m_J, m_M, m_L, m_r, m_tmp, m_powers;
+  std::size_t m_deg_J = 0, m_deg_M = 0, m_deg_L = 0;
+  Real m_lambda_alpha, m_lambda_beta, m_t;
+};
+
+}  // namespace viscor::detail

@@ -1,0 +1,324 @@
+// solve_impact (Taylor method) against the exact solutions, at every scalar type:
+// e and 1 - e (relative) to the working precision minus 3 digits (double: 1e-14
+// absolute on e), plus the limits and outcomes the issue asks for.
+#include <viscor/exact_solutions.hpp>
+#include <viscor/solve_impact.hpp>
+
+#include <boost/math/special_functions/beta.hpp>
+
+#include <gtest/gtest.h>
+
+#include "test_utils.hpp"
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace viscor {
+namespace {
+
+using test::absolute_close;
+using test::relative_close;
+
+/// The accuracy the issue asks for: working precision minus 3 decimal digits
+/// (for double the stricter 1e-14).
+template <class Real>
+Real accuracy() {
+  using std::pow;
+  if constexpr (std::is_same_v<Real, double>) return 1e-14;
+  return pow(Real(10), Real(3 - decimal_digits<Real>()));
+}
+
+template <class Real>
+Real value(const char* text) {
+  return parse_real<Real>(text, "test value");
+}
+
+/// exact_cor evaluated with 20 guard digits and rounded to Real: the closed
+/// forms themselves lose digits at large g (e from u'(T_f) at g = 1e3 loses ~6).
+template <class Real>
+exact_result<Real> reference(const contact_law& law, const char* gamma, const char* g) {
+  scoped_precision guard(decimal_digits<Real>() + 20);
+  const auto r = exact_cor<mpfr_real>(law, mpfr_real(gamma), mpfr_real(g));
+  if (!r) throw std::logic_error("no exact solution");
+  exact_result<Real> out;
+  out.e = test::convert<Real>(r->e);
+  out.one_minus_e = test::convert<Real>(r->one_minus_e);
+  out.outcome = r->outcome;
+  if (r->contact_time) out.contact_time = test::convert<Real>(*r->contact_time);
+  if (r->max_compression) out.max_compression = test::convert<Real>(*r->max_compression);
+  if (r->time_of_max_compression) out.time_of_max_compression = test::convert<Real>(*r->time_of_max_compression);
+  return out;
+}
+
+/// Checks one (law, gamma, g) against exact_cor.
+template <class Real>
+void expect_exact(const contact_law& law, const char* gamma_text, const char* g_text) {
+  SCOPED_TRACE(law.describe() + ", gamma = " + gamma_text + ", g = " + g_text);
+  using std::abs;
+  const Real gamma = value<Real>(gamma_text), g = value<Real>(g_text);
+  const exact_result<Real> exact = reference<Real>(law, gamma_text, g_text);
+  const impact_result<Real> r = solve_impact<Real>(law, gamma, g);
+  const Real tol = accuracy<Real>();
+  ASSERT_EQ(r.outcome, exact.outcome);
+  EXPECT_EQ(r.method, integration_method::taylor);
+  EXPECT_GT(r.steps, 0u);
+  EXPECT_PRED_FORMAT3(absolute_close<Real>, r.e, exact.e, tol);
+  if (exact.outcome == impact_outcome::stick) {
+    EXPECT_EQ(r.e, 0);
+    EXPECT_EQ(r.one_minus_e, 1);
+    return;
+  }
+  EXPECT_PRED_FORMAT3(relative_close<Real>, r.one_minus_e, exact.one_minus_e, tol);
+  // The claimed error must cover the actual one.
+  EXPECT_LE(abs(r.e - exact.e), r.error_estimate + epsilon<Real>());
+  // NOTE: times and the energy residual (through e_v = -u'(T_f)) are as
+  // ill-conditioned as the motion: errors grow like the energy scale (1 + g)^2.
+  const Real loose = tol * (1 + abs(g)) * (1 + abs(g));
+  EXPECT_LE(abs(r.energy_residual), loose);
+  if (exact.contact_time) EXPECT_PRED_FORMAT3(relative_close<Real>, r.contact_time, *exact.contact_time, loose);
+  if (exact.max_compression)
+    EXPECT_PRED_FORMAT3(relative_close<Real>, r.max_compression, *exact.max_compression, loose);
+  if (exact.time_of_max_compression)
+    EXPECT_PRED_FORMAT3(relative_close<Real>, r.time_of_max_compression, *exact.time_of_max_compression, loose);
+}
+
+const char* const gammas[] = {"1e-30", "1e-6", "1e-3", "0.1", "0.5", "1.5"};
+
+template <class Real>
+class SolveImpactExact : public ::testing::Test {};
+TYPED_TEST_SUITE(SolveImpactExact, test::all_real_types);
+
+TYPED_TEST(SolveImpactExact, LinearLawAnyLoad) {
+  for (const char* g : {"0", "0.05", "1", "10", "1e3"})
+    for (const char* gamma : gammas) expect_exact<TypeParam>(law_by_name("linear"), gamma, g);
+}
+
+TYPED_TEST(SolveImpactExact, HuntCrossleyFormAtZeroLoad) {
+  for (auto [p, q] : {std::pair{1, 1}, std::pair{3, 2}, std::pair{2, 1}}) {
+    const contact_law law = make_law(exponent::rational(p, q), exponent::rational(p + q, q));
+    for (const char* gamma : gammas) expect_exact<TypeParam>(law, gamma, "0");
+  }
+}
+
+TYPED_TEST(SolveImpactExact, TsujiAtZeroLoad) {
+  for (const char* gamma : gammas) expect_exact<TypeParam>(law_by_name("tsuji"), gamma, "0");
+}
+
+TYPED_TEST(SolveImpactExact, NoDampingConservesEnergyExactly) {
+  using Real = TypeParam;
+  for (const auto& named : named_laws)
+    for (const char* g : {"0", "1e-8", "1", "1e6"}) {
+      SCOPED_TRACE(std::string(named.name) + ", g = " + g);
+      const impact_result<Real> r = solve_impact<Real>(law_by_name(named.name), Real(0), value<Real>(g));
+      EXPECT_EQ(r.outcome, impact_outcome::rebound);
+      EXPECT_EQ(r.e, 1);
+      EXPECT_EQ(r.one_minus_e, 0);
+    }
+}
+
+// A non-rational exponent takes the u = exp(sigma) route; the Hunt-Crossley
+// closed form holds for every real alpha.
+TYPED_TEST(SolveImpactExact, RealExponentHuntCrossley) {
+  using Real = TypeParam;
+  const contact_law law = make_law(exponent::parse("1.41421356237309504880168872420969807856967187537694", "alpha"),
+                                   exponent::parse("2.41421356237309504880168872420969807856967187537694", "beta"));
+  ASSERT_FALSE(law.alpha.is_rational());
+  for (const char* gamma_text : {"1e-6", "0.1", "1.5"}) {
+    SCOPED_TRACE(gamma_text);
+    const Real gamma = value<Real>(gamma_text);
+    const exact_result<Real> exact = exact_hunt_crossley(law.alpha.value<Real>(), gamma);
+    const impact_result<Real> r = solve_impact<Real>(law, gamma, Real(0));
+    EXPECT_PRED_FORMAT3(absolute_close<Real>, r.e, exact.e, accuracy<Real>());
+    EXPECT_PRED_FORMAT3(relative_close<Real>, r.one_minus_e, exact.one_minus_e, accuracy<Real>());
+  }
+}
+
+// Eq. (39): C0 = beta ((alpha+1)/2)^(beta/(alpha+1) - 1) B(beta/(alpha+1), 3/2),
+// the slope of e = 1 - C0 gamma + O(gamma^2) at g = 0.
+template <class Real>
+Real c0_closed_form(const contact_law& law) {
+  using std::pow;
+  const Real a = law.alpha.value<Real>(), b = law.beta.value<Real>();
+  return b * pow((a + 1) / 2, b / (a + 1) - 1) * boost::math::beta(b / (a + 1), Real(3) / 2);
+}
+
+TYPED_TEST(SolveImpactExact, SmallDampingSlope) {
+  using Real = TypeParam;
+  const Real gamma = value<Real>("1e-20");
+  const Real tol = value<Real>("1e-15");  // >= 15 digits; O(gamma) = 1e-20 relative
+  for (const auto& named : named_laws) {
+    SCOPED_TRACE(named.name);
+    const contact_law law = law_by_name(named.name);
+    const impact_result<Real> r = solve_impact<Real>(law, gamma, Real(0));
+    EXPECT_PRED_FORMAT3(relative_close<Real>, Real(r.one_minus_e / gamma), c0_closed_form<Real>(law), tol);
+  }
+}
+
+TEST(SolveImpact, KuwabaraKonoSlopeMatchesIndependentConstant) {
+  // C0 for alpha = beta = 3/2, computed independently (ERRATA.md, NUMERICS-NOTES.md).
+  const mpfr_50 c0("1.730173287142933198695851158");
+  const contact_law law = law_by_name("kuwabara_kono");
+  EXPECT_PRED_FORMAT3(relative_close<mpfr_50>, c0_closed_form<mpfr_50>(law), c0, mpfr_50("1e-27"));
+  const mpfr_50 gamma("1e-30");
+  const auto r = solve_impact<mpfr_50>(law, gamma, mpfr_50(0));
+  EXPECT_PRED_FORMAT3(relative_close<mpfr_50>, mpfr_50(r.one_minus_e / gamma), c0, mpfr_50("1e-27"));
+}
+
+// Figs. 3 and 4 of the report, alpha = beta = 3/2.
+TEST(SolveImpact, ReportFigures3And4) {
+  const contact_law law = law_by_name("kuwabara_kono");
+  const auto fig3 = solve_impact<double>(law, 0.006, 0.1);
+  EXPECT_EQ(fig3.outcome, impact_outcome::rebound);
+  EXPECT_GT(fig3.e, 0.9);
+  const auto fig4 = solve_impact<double>(law, 0.06, 4.0);
+  EXPECT_EQ(fig4.outcome, impact_outcome::stick);
+  EXPECT_EQ(fig4.e, 0);
+  EXPECT_GT(fig4.contact_time, fig4.time_of_max_compression);
+  EXPECT_GT(fig4.max_compression, 0);
+}
+
+// 100 digits agree with 50 digits to >= 47 digits (a double slipping in would show).
+TEST(SolveImpact, PrecisionEscalation) {
+  for (const auto& named : named_laws)
+    for (const char* g : {"0", "1"})
+      for (const char* gamma : {"1e-4", "0.1"}) {
+        SCOPED_TRACE(std::string(named.name) + ", gamma = " + gamma + ", g = " + g);
+        const contact_law law = law_by_name(named.name);
+        const auto lo = solve_impact<mpfr_50>(law, mpfr_50(gamma), mpfr_50(g));
+        const auto hi = solve_impact<mpfr_100>(law, mpfr_100(gamma), mpfr_100(g));
+        ASSERT_EQ(lo.outcome, hi.outcome);
+        if (lo.outcome == impact_outcome::stick) continue;
+        EXPECT_GE(test::agreeing_digits(test::convert<mpfr_100>(lo.e), hi.e), 47.0);
+        EXPECT_GE(test::agreeing_digits(test::convert<mpfr_100>(lo.one_minus_e), hi.one_minus_e), 47.0);
+      }
+}
+
+// Extremes in double: a right answer to the claimed accuracy, or a typed error.
+TEST(SolveImpact, ExtremesGiveFiniteResults) {
+  using boost::math::isfinite;
+  const std::vector<contact_law> laws{
+      law_by_name("linear"), law_by_name("kuwabara_kono"), law_by_name("hertz_linear_damping"),
+      make_law(exponent::rational(1, 1), exponent::rational(3, 1)),
+      make_law(exponent::rational(3, 1), exponent::rational(1, 1)),
+      make_law(exponent::rational(5, 2), exponent::rational(5, 2)),
+      make_law(exponent::parse("1.3", "alpha"), exponent::parse("1.7", "beta"))};
+  for (const auto& law : laws)
+    for (double gamma : {0.0, 1e-300, 10.0})
+      for (double g : {-0.9, 0.0, 1e-300, 1e-12, 1e6, 1e12}) {
+        SCOPED_TRACE(law.describe() + ", gamma = " + to_decimal_string(gamma) + ", g = " + to_decimal_string(g));
+        impact_result<double> r;
+        try {
+          r = solve_impact<double>(law, gamma, g);
+        } catch (const certification_error& e) {
+          // g = 1e12 in double: e^2 ~ 1 drowns in g u ~ 1e16; saying so is allowed.
+          EXPECT_GE(g, 1e6) << e.what();
+          continue;
+        }
+        EXPECT_TRUE(isfinite(r.e) && isfinite(r.one_minus_e) && isfinite(r.energy_residual));
+        EXPECT_TRUE(r.e >= 0 && r.e <= 1);
+        EXPECT_TRUE(r.one_minus_e >= 0 && r.one_minus_e <= 1);
+        EXPECT_TRUE(isfinite(r.error_estimate) && r.error_estimate >= 0);
+        if (g < 0) EXPECT_EQ(r.outcome, impact_outcome::rebound);
+        if (gamma == 0) EXPECT_EQ(r.e, 1);
+        if (gamma == 1e-300) {
+          EXPECT_EQ(r.outcome, impact_outcome::rebound);
+          EXPECT_LE(r.one_minus_e, 1e-250);
+        }
+        const auto exact = exact_cor<double>(law, gamma, g);
+        if (exact && g < 1e6) {  // exact_linear itself loses digits at g >= 1e6
+          EXPECT_EQ(r.outcome, exact->outcome);
+          EXPECT_LE(std::abs(r.e - exact->e), 1e-14);
+        }
+      }
+}
+
+TEST(SolveImpact, StrongDampingCreepsToRest) {
+  // Linear law, gamma >= 2, g = 0: overdamped, u and u' reach 0 only asymptotically.
+  const auto r = solve_impact<double>(law_by_name("linear"), 1e3, 0.0);
+  EXPECT_EQ(r.outcome, impact_outcome::stick);
+  EXPECT_EQ(r.contact_time, std::numeric_limits<double>::infinity());
+  // Tsuji creeps exactly when sqrt(5) gamma / 4 >= 1 (Antypov-Elliott), as the barrier says.
+  EXPECT_EQ(solve_impact<double>(law_by_name("tsuji"), 1.8, 0.0).outcome, impact_outcome::stick);
+  EXPECT_EQ(solve_impact<double>(law_by_name("tsuji"), 1.78, 0.0).outcome, impact_outcome::rebound);
+  // Hunt-Crossley form never sticks at g = 0: e = 1/(gamma beta) asymptotically.
+  const auto hc = solve_impact<double>(law_by_name("hunt_crossley"), 1e3, 0.0);
+  const auto hc_exact = exact_cor<double>(law_by_name("hunt_crossley"), 1e3, 0.0);
+  EXPECT_EQ(hc.outcome, impact_outcome::rebound);
+  // e = 4e-4 from a stiff path: right to its claimed accuracy, which is modest.
+  EXPECT_LE(std::abs(hc.e - hc_exact->e), hc.error_estimate);
+  EXPECT_LE(hc.error_estimate, 1e-9);
+}
+
+// Linear law, gamma = 0.5: the sticking threshold g_c from the exact solution,
+// then g_c (1 -+ 1e-10) on both sides.
+TEST(SolveImpact, NearTheStickingThreshold) {
+  using Real = long double;
+  const contact_law law = law_by_name("linear");
+  const Real gamma = 0.5L;
+  Real lo = 0, hi = 10;  // rebound at lo, stick at hi
+  for (int i = 0; i < 200 && hi - lo > 4 * std::numeric_limits<Real>::epsilon() * hi; ++i) {
+    const Real mid = (lo + hi) / 2;
+    (exact_cor<Real>(law, gamma, mid)->outcome == impact_outcome::rebound ? lo : hi) = mid;
+  }
+  for (const Real factor : {1 - 1e-10L, 1 + 1e-10L}) {
+    const double g = static_cast<double>(lo * factor);
+    SCOPED_TRACE(to_decimal_string(g));
+    const auto r = solve_impact<double>(law, 0.5, g);
+    const auto exact = exact_cor<mpfr_50>(law, mpfr_50(0.5), mpfr_50(g));  // every double is exact in mpfr_50
+    EXPECT_EQ(r.outcome, exact->outcome);
+    const double e_exact = static_cast<double>(exact->e);
+    // e ~ sqrt(g_c - g) is ill-conditioned: its error is that of e^2 over 2e.
+    EXPECT_LE(std::abs(r.e - e_exact), r.error_estimate + 1e-16);
+    EXPECT_LE(std::abs(r.e - e_exact), 1e-9);
+  }
+}
+
+TEST(SolveImpact, RejectsInvalidInput) {
+  const contact_law kk = law_by_name("kuwabara_kono");
+  try {
+    solve_impact<double>(kk, -1.0, 0.0);
+    FAIL() << "negative gamma accepted";
+  } catch (const invalid_parameter& e) {
+    EXPECT_NE(std::string(e.what()).find("gamma"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(solve_impact<double>(kk, 0.1, std::nan("")), invalid_parameter);
+  contact_law bad = kk;
+  bad.alpha = exponent::rational(1, 2);
+  EXPECT_THROW(solve_impact<double>(bad, 0.1, 0.0), invalid_parameter);
+  solve_options<double> options;
+  options.tolerance = -1;
+  EXPECT_THROW(solve_impact<double>(kk, 0.1, 0.0, options), invalid_parameter);
+#if !__has_include(<viscor/adaptive_impact.hpp>)
+  options = {};
+  options.method = integration_method::adaptive;
+  EXPECT_THROW(solve_impact<double>(kk, 0.1, 0.0, options), invalid_parameter);
+#endif
+}
+
+TEST(SolveImpact, StepBudgetRaisesTypedError) {
+  solve_options<double> options;
+  options.max_steps = 3;
+  try {
+    solve_impact<double>(law_by_name("kuwabara_kono"), 0.05, 1.0, options);
+    FAIL() << "step budget not enforced";
+  } catch (const convergence_error& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("gamma"), std::string::npos) << what;
+    EXPECT_NE(what.find("kuwabara_kono"), std::string::npos) << what;
+  }
+}
+
+TEST(SolveImpact, LooserToleranceStillAccurate) {
+  const contact_law law = law_by_name("linear");
+  solve_options<double> options;
+  options.tolerance = 1e-8;
+  const auto loose = solve_impact<double>(law, 0.3, 0.5, options);
+  const auto full = solve_impact<double>(law, 0.3, 0.5);
+  const auto exact = exact_cor<double>(law, 0.3, 0.5);
+  EXPECT_LE(std::abs(loose.e - exact->e), 1e-7);
+  EXPECT_LE(std::abs(full.e - exact->e), 1e-14);
+}
+
+}  // namespace
+}  // namespace viscor
