@@ -4,7 +4,7 @@
 #include <viscor/approximations.hpp>
 #include <viscor/exact_solutions.hpp>
 
-#include "approx_test_utils.hpp"
+#include "test_utils.hpp"
 
 #include <gtest/gtest.h>
 
@@ -14,7 +14,7 @@
 namespace {
 
 using viscor::coefficient_source;
-using viscor::test::relative_error;
+using viscor::test::relative_difference;
 using viscor::test::ulps;
 
 template <class Real>
@@ -135,7 +135,7 @@ TYPED_TEST(Approximations, LargeGMatchesTheIntegralAsymptoticallyAndSticksFromGc
     Real previous = 1;
     for (const Real g : {Real(10), Real(1e3), Real(1e6)}) {
       const Real ratio = c.beta * viscor::integral_I(c.alpha, c.beta, g) / pow(g, c.p);
-      const Real err = relative_error(ratio, c.C);
+      const Real err = relative_difference(ratio, c.C);
       EXPECT_LT(err, previous);
       previous = err;
     }

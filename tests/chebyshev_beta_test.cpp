@@ -5,7 +5,7 @@
 #include <viscor/closed_form.hpp>
 #include <viscor/integrals.hpp>
 
-#include "approx_test_utils.hpp"
+#include "test_utils.hpp"
 
 #include <gtest/gtest.h>
 
@@ -14,7 +14,7 @@
 
 namespace {
 
-using viscor::test::relative_error;
+using viscor::test::relative_difference;
 using viscor::test::ulps;
 
 template <class Real>
@@ -124,8 +124,8 @@ TEST(ChebyshevBetaAccuracy, OrderTwentyOneWithinFiveThousandthsOverThetaAndBeta)
     for (int it = 0; it <= 20; ++it) {
       const double theta = it / 20.0;
       const auto approx = scheme.approximate(a, b, theta);
-      worst_m = std::max(worst_m, relative_error(approx.m, viscor::m_integral(a, b, theta)));
-      worst_j = std::max(worst_j, relative_error(approx.j, viscor::j_integral(a, b, theta)));
+      worst_m = std::max(worst_m, relative_difference(approx.m, viscor::m_integral(a, b, theta)));
+      worst_j = std::max(worst_j, relative_difference(approx.j, viscor::j_integral(a, b, theta)));
     }
   }
   EXPECT_LE(worst_m, 5e-3);
@@ -139,9 +139,9 @@ TEST(ChebyshevBetaAccuracy, ErrorFallsWithTheOrderInExactArithmetic) {
   using Real = viscor::mpfr_50;
   const Real a = Real(3) / 2, b = Real(3) / 2, theta = Real(2) / 5;
   const Real exact = viscor::m_integral(a, b, theta);
-  const Real e21 = relative_error(viscor::chebyshev_beta_m(a, b, theta, 21), exact);
-  const Real e41 = relative_error(viscor::chebyshev_beta_m(a, b, theta, 41), exact);
-  const Real e81 = relative_error(viscor::chebyshev_beta_m(a, b, theta, 81), exact);
+  const Real e21 = relative_difference(viscor::chebyshev_beta_m(a, b, theta, 21), exact);
+  const Real e41 = relative_difference(viscor::chebyshev_beta_m(a, b, theta, 41), exact);
+  const Real e81 = relative_difference(viscor::chebyshev_beta_m(a, b, theta, 81), exact);
   EXPECT_LT(e41, e21);
   EXPECT_LT(e81, e41);
 }
@@ -150,8 +150,8 @@ TEST(ChebyshevBetaAccuracy, DoubleRoundingExplodesBeyondThirtyOne) {
   // In double the recurrence (53) amplifies rounding by ~3.7 per order: n = 41 is useless.
   const double a = 1.5, b = 1.5, theta = 0.4;
   const double exact = viscor::m_integral(a, b, theta);
-  EXPECT_LT(relative_error(viscor::chebyshev_beta_m(a, b, theta, 21), exact), 5e-3);
-  EXPECT_GT(relative_error(viscor::chebyshev_beta_m(a, b, theta, 51), exact), 1e-1);
+  EXPECT_LT(relative_difference(viscor::chebyshev_beta_m(a, b, theta, 21), exact), 5e-3);
+  EXPECT_GT(relative_difference(viscor::chebyshev_beta_m(a, b, theta, 51), exact), 1e-1);
 }
 
 TEST(ChebyshevBetaAccuracy, IntegralsThroughThetaFollowTheQuadrature) {
@@ -165,11 +165,11 @@ TEST(ChebyshevBetaAccuracy, IntegralsThroughThetaFollowTheQuadrature) {
       SCOPED_TRACE(std::string(n.name) + ", g = " + std::to_string(g));
       const auto approx = viscor::chebyshev_beta_integrals(scheme, a, b, g);
       const auto exact = viscor::integrals_IQ(a, b, g);
-      EXPECT_LE(relative_error(approx.I, exact.I), 1e-2);
-      EXPECT_LE(relative_error(approx.Q, exact.Q), 1e-2);
+      EXPECT_LE(relative_difference(approx.I, exact.I), 1e-2);
+      EXPECT_LE(relative_difference(approx.Q, exact.Q), 1e-2);
       if (g == 0) {
-        EXPECT_LE(relative_error(approx.I, exact.I), 1e-14);
-        EXPECT_LE(relative_error(approx.Q, exact.Q), 1e-14);
+        EXPECT_LE(relative_difference(approx.I, exact.I), 1e-14);
+        EXPECT_LE(relative_difference(approx.Q, exact.Q), 1e-14);
       }
     }
   }

@@ -10,7 +10,7 @@
 #include <viscor/closed_form.hpp>
 #include <viscor/integrals.hpp>
 
-#include "approx_test_utils.hpp"
+#include "test_utils.hpp"
 
 #include <boost/math/constants/constants.hpp>
 #include <gtest/gtest.h>

@@ -5,7 +5,7 @@
 #include <viscor/closed_form.hpp>
 #include <viscor/integrals.hpp>
 
-#include "approx_test_utils.hpp"
+#include "test_utils.hpp"
 
 #include <gtest/gtest.h>
 

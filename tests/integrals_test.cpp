@@ -6,7 +6,7 @@
 #include <viscor/integrals.hpp>
 #include <viscor/u_max.hpp>
 
-#include "approx_test_utils.hpp"
+#include "test_utils.hpp"
 
 #include <boost/math/constants/constants.hpp>
 #include <gtest/gtest.h>

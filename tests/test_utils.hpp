@@ -13,6 +13,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <unistd.h>
 
 namespace viscor::test {
 
@@ -53,6 +54,26 @@ template <class Real>
                                        << " > tolerance " << to_decimal_string(tol, 4);
 }
 
+/// EXPECT_PRED_FORMAT3(relatively_close, actual, expected, tolerance) where actual
+/// and tolerance may be of other types: both are converted to the type of `expected`.
+template <class Real, class A, class T>
+::testing::AssertionResult relatively_close(const char* a_expr, const char* e_expr, const char* t_expr,
+                                            const A& actual, const Real& expected, const T& tolerance) {
+  return relative_close<Real>(a_expr, e_expr, t_expr, Real(actual), expected, Real(tolerance));
+}
+
+/// A reference constant given as a decimal string, correctly rounded to Real.
+template <class Real>
+Real constant(const std::string& digits) {
+  return parse_real<Real>(digits, "reference constant");
+}
+
+/// k machine epsilons of Real.
+template <class Real>
+Real ulps(int k) {
+  return Real(k) * epsilon<Real>();
+}
+
 /// EXPECT_PRED_FORMAT3(absolute_close, actual, expected, tolerance): |a - e| <= tol.
 template <class Real>
 ::testing::AssertionResult absolute_close(const char* a_expr, const char* e_expr, const char*, const Real& a,
@@ -79,8 +100,10 @@ struct cli_run {
 
 /// Runs `viscor ARGS` (VISCOR_CLI_PATH, set by CMake) and captures its output.
 inline cli_run run_cli(const std::string& args) {
-  const std::string dir = ::testing::TempDir();
-  const std::string out = dir + "viscor_cli_out.txt", err = dir + "viscor_cli_err.txt";
+  // NOTE: ctest -j runs test processes side by side: name the capture files per process.
+  static int calls = 0;
+  const std::string stem = ::testing::TempDir() + "viscor_cli_" + std::to_string(::getpid()) + "_" + std::to_string(++calls);
+  const std::string out = stem + ".out", err = stem + ".err";
   const std::string command = std::string(VISCOR_CLI_PATH) + " " + args + " > " + out + " 2> " + err;
   cli_run r;
   const int raw = std::system(command.c_str());
@@ -92,7 +115,12 @@ inline cli_run run_cli(const std::string& args) {
     return s.str();
   };
   r.out = slurp(out), r.err = slurp(err);
+  std::remove(out.c_str());
+  std::remove(err.c_str());
   return r;
 }
 
 }  // namespace viscor::test
+
+#define VISCOR_EXPECT_REL(actual, expected, tolerance) \
+  EXPECT_PRED_FORMAT3(::viscor::test::relatively_close, actual, expected, tolerance)

@@ -105,7 +105,7 @@ class taylor_impact_solver {
 
     if (!start_phase(end_sys, end_int)) return finish();
     if (!time_phase(time_int)) return finish();
-    end_phase(end_sys, end_int);
+    end_phase(end_int);
     return finish();
   }
 
@@ -225,7 +225,7 @@ class taylor_impact_solver {
   }
 
   // ---- phase 3: back to u = 0 in sigma ----
-  void end_phase(es& sys, taylor_integrator<Real, es>& integ) {
+  void end_phase(taylor_integrator<Real, es>& integ) {
     using std::abs;
     using std::log;
     using std::pow;
