@@ -4,6 +4,7 @@
 
 #include <viscor/exact_solutions.hpp>
 #include <viscor/scaling.hpp>
+#include <viscor/certification.hpp>
 #include <viscor/solve_impact.hpp>
 
 #define VISCOR_TEMPLATES(PREFIX, Real)                                                                  \
@@ -11,7 +12,9 @@
                                                                      const Real&);                      \
   PREFIX template scaled_parameters<Real> to_scaled<Real>(const contact_law&, const physical_parameters<Real>&); \
   PREFIX template impact_result<Real> solve_impact<Real>(const contact_law&, const Real&, const Real&,          \
-                                                         const solve_options<Real>&);
+                                                         const solve_options<Real>&);                  \
+  PREFIX template certified_result<Real> certify<Real>(const contact_law&, const Real&, const Real&,            \
+                                                       const certify_options&);
 
 #define VISCOR_EXTERN_TEMPLATES(Real) VISCOR_TEMPLATES(extern, Real)
 

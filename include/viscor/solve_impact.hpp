@@ -9,10 +9,7 @@
 #include <viscor/real_io.hpp>
 #include <viscor/taylor_impact.hpp>
 
-#if __has_include(<viscor/adaptive_impact.hpp>)
 #include <viscor/adaptive_impact.hpp>
-#define VISCOR_HAS_ADAPTIVE_IMPACT 1
-#endif
 
 namespace viscor {
 
@@ -31,11 +28,7 @@ impact_result<Real> solve_impact(const contact_law& law, const Real& gamma, cons
     case integration_method::taylor:
       return solve_impact_taylor(law, gamma, g, options);
     case integration_method::adaptive:
-#ifdef VISCOR_HAS_ADAPTIVE_IMPACT
       return solve_impact_adaptive(law, gamma, g, options);
-#else
-      throw invalid_parameter("integration method 'adaptive' is not built");
-#endif
   }
   throw invalid_parameter("unknown integration method");
 }

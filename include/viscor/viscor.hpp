@@ -3,6 +3,7 @@
 #pragma once
 
 #include <viscor/approximations.hpp>
+#include <viscor/certification.hpp>
 #include <viscor/chebyshev_beta.hpp>
 #include <viscor/closed_form.hpp>
 #include <viscor/config.hpp>

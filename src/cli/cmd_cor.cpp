@@ -2,6 +2,7 @@
 // working precision (solve_impact, Taylor method by default). Parameters are
 // scaled (--gamma, --g) or physical (--physical m=..,k=..,gamma0=..,v0=..,gravity=..,F=..,
 // converted by eq. (2)).
+#include "certify_output.hpp"
 #include "cli_common.hpp"
 #include "command_registry.hpp"
 
@@ -44,6 +45,7 @@ struct cor_command {
   std::string gamma, g, physical, method = "taylor", tolerance = "0";
   int digits = 15;
   std::size_t max_steps = solve_options<double>{}.max_steps;
+  bool certify = false;
 
   void run() const {
     const contact_law model = law.resolve();
@@ -124,6 +126,7 @@ struct cor_command {
            << "steps      " << r.steps << " (" << to_string(r.method) << ")\n"
            << "time       " << seconds << " s\n"
            << "digits     " << decimal_digits<Real>() << " (working precision)\n";
+      if (certify) certify_and_report<Real>(model, gamma_value, g_value, text, j);
       output.emit(text.str(), j);
     });
   }
@@ -142,6 +145,8 @@ void setup(CLI::App& app) {
   app.add_option("--tolerance", cmd->tolerance, "relative tolerance per step (0: working precision)")
       ->capture_default_str();
   app.add_option("--max-steps", cmd->max_steps, "step budget")->capture_default_str();
+  app.add_flag("--certify", cmd->certify,
+               "certify the digits: Taylor at two precisions and the independent adaptive method must agree");
   app.callback([cmd] { cmd->run(); });
 }
 

@@ -1,0 +1,409 @@
+// Reading a table grid spec (grid_spec.hpp) from JSON, with errors that name
+// file, line and field; and writing the spec back as normalised JSON for the
+// sidecars (the fingerprint that resume and merge compare).
+//
+// NOTE: numbers are taken from their source text, never through double: the
+// SAX interface of nlohmann-json hands over the text of every floating-point
+// number, so "gamma": 0.1 is the exact decimal 0.1. Lines are tracked with a
+// counting iterator under the parser (nlohmann 3.11 keeps no positions).
+#pragma once
+
+#include "cli_common.hpp"
+
+#include <viscor/grid_spec.hpp>
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <fstream>
+#include <iterator>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace viscor::cli {
+
+namespace detail {
+
+/// A JSON value with its source line; numbers keep their exact text.
+struct spec_node {
+  enum class type { null, boolean, number, string, object, array };
+  type kind = type::null;
+  std::string text;  ///< number text or string value
+  bool flag = false;
+  std::vector<std::pair<std::string, spec_node>> members;  ///< object, in file order
+  std::vector<std::size_t> member_lines;                   ///< line of each key
+  std::vector<spec_node> elements;                          ///< array
+  std::size_t line = 0;
+
+  std::string type_name() const {
+    switch (kind) {
+      case type::null: return "null";
+      case type::boolean: return "a boolean";
+      case type::number: return "a number";
+      case type::string: return "a string";
+      case type::object: return "an object";
+      case type::array: return "an array";
+    }
+    return "?";
+  }
+};
+
+/// Input iterator over the text that records how far the parser has read.
+struct counting_iterator {
+  using iterator_category = std::input_iterator_tag;
+  using value_type = char;
+  using difference_type = std::ptrdiff_t;
+  using pointer = const char*;
+  using reference = const char&;
+
+  const char* p = nullptr;
+  const char** furthest = nullptr;
+
+  reference operator*() const { return *p; }
+  counting_iterator& operator++() {
+    ++p;
+    if (p > *furthest) *furthest = p;
+    return *this;
+  }
+  counting_iterator operator++(int) {
+    counting_iterator old = *this;
+    ++*this;
+    return old;
+  }
+  bool operator==(const counting_iterator& o) const { return p == o.p; }
+  bool operator!=(const counting_iterator& o) const { return p != o.p; }
+};
+
+/// Builds the spec_node tree from SAX events.
+class spec_builder : public nlohmann::json_sax<nlohmann::json> {
+ public:
+  spec_builder(const std::string& text, const std::string& file, const char** furthest)
+      : m_text(text), m_file(file), m_furthest(furthest) {}
+
+  spec_node root;
+
+  bool null() override { return scalar(spec_node::type::null, ""); }
+  bool boolean(bool v) override {
+    spec_node& n = place(spec_node::type::boolean);
+    n.flag = v;
+    return true;
+  }
+  bool number_integer(number_integer_t v) override { return scalar(spec_node::type::number, std::to_string(v)); }
+  bool number_unsigned(number_unsigned_t v) override { return scalar(spec_node::type::number, std::to_string(v)); }
+  bool number_float(number_float_t, const string_t& s) override { return scalar(spec_node::type::number, s); }
+  bool string(string_t& v) override { return scalar(spec_node::type::string, v); }
+  bool binary(binary_t&) override { return scalar(spec_node::type::null, ""); }
+  bool start_object(std::size_t) override {
+    m_stack.push_back(&place(spec_node::type::object));
+    return true;
+  }
+  bool key(string_t& k) override {
+    spec_node& object = *m_stack.back();
+    const std::size_t line = current_line();
+    for (std::size_t i = 0; i < object.members.size(); ++i)
+      if (object.members[i].first == k)
+        throw viscor::parse_error(m_file + ":" + std::to_string(line) + ": field " + k + ": given twice (also on line " +
+                          std::to_string(object.member_lines[i]) + ")");
+    m_key = k;
+    m_key_line = line;
+    return true;
+  }
+  bool end_object() override {
+    m_stack.pop_back();
+    return true;
+  }
+  bool start_array(std::size_t) override {
+    m_stack.push_back(&place(spec_node::type::array));
+    return true;
+  }
+  bool end_array() override {
+    m_stack.pop_back();
+    return true;
+  }
+  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception& e) override {
+    // e.what(): "[json.exception.parse_error.101] parse error at line 3, column 7: ..."
+    std::string what = e.what();
+    const auto at = what.find("at line ");
+    if (at != std::string::npos) what = what.substr(at);
+    throw viscor::parse_error(m_file + ": invalid JSON " + what);
+  }
+
+ private:
+  bool scalar(spec_node::type t, const std::string& text) {
+    place(t).text = text;
+    return true;
+  }
+  // Line of the last non-blank character the parser has read (a number's
+  // look-ahead character is a blank, ',', ']' or '}' on the number's line).
+  std::size_t current_line() const {
+    std::size_t end = static_cast<std::size_t>(*m_furthest - m_text.data());
+    while (end > 0 && std::isspace(static_cast<unsigned char>(m_text[end - 1]))) --end;
+    return 1 + static_cast<std::size_t>(std::count(m_text.begin(), m_text.begin() + static_cast<long>(end), '\n'));
+  }
+  spec_node& place(spec_node::type t) {
+    spec_node* n;
+    if (m_stack.empty()) {
+      n = &root;
+    } else if (m_stack.back()->kind == spec_node::type::object) {
+      m_stack.back()->members.emplace_back(m_key, spec_node{});
+      m_stack.back()->member_lines.push_back(m_key_line);
+      n = &m_stack.back()->members.back().second;
+    } else {
+      m_stack.back()->elements.emplace_back();
+      n = &m_stack.back()->elements.back();
+    }
+    n->kind = t;
+    n->line = current_line();
+    return *n;
+  }
+
+  const std::string& m_text;
+  const std::string& m_file;
+  const char** m_furthest;
+  std::vector<spec_node*> m_stack;  // NOTE: only the innermost open container grows, so these stay valid
+  std::string m_key;
+  std::size_t m_key_line = 0;
+};
+
+/// Interprets the tree as a grid_spec.
+class spec_reader {
+ public:
+  explicit spec_reader(const std::string& file) : m_file(file) {}
+
+  grid_spec read(const spec_node& root) {
+    if (root.kind != spec_node::type::object) fail(root, "spec", "the spec must be a JSON object");
+    grid_spec spec;
+    spec.source = m_file;
+    bool have_laws = false;
+    for (std::size_t i = 0; i < root.members.size(); ++i) {
+      const auto& [key, node] = root.members[i];
+      if (key == "description" || key == "comment") {
+        spec.description = key == "description" ? string(node, key) : spec.description;
+      } else if (key == "laws" || key == "law") {
+        if (have_laws) fail(node, key, "give either 'law' or 'laws', not both");
+        have_laws = true;
+        spec.laws = laws(node, key);
+      } else if (key == "gamma") {
+        spec.gamma = axis(node, key);
+      } else if (key == "g") {
+        spec.g = axis(node, key);
+      } else if (key == "digits") {
+        spec.digits = integer(node, key, 1, max_working_digits);
+      } else if (key == "method") {
+        const std::string m = string(node, key);
+        if (m == "auto") spec.method = row_method::automatic;
+        else if (m == "exact") spec.method = row_method::exact;
+        else if (m == "certify") spec.method = row_method::certify;
+        else fail(node, key, "must be \"auto\", \"exact\" or \"certify\", got \"" + m + "\"");
+      } else if (key == "min_digits") {
+        spec.min_digits = integer(node, key, 0, max_working_digits);
+      } else if (key == "solve_for") {
+        const std::string v = string(node, key);
+        if (v == "g") spec.solve_for = threshold_variable::g;
+        else if (v == "gamma") spec.solve_for = threshold_variable::gamma;
+        else fail(node, key, "must be \"g\" or \"gamma\", got \"" + v + "\"");
+      } else if (key == "threshold_digits") {
+        spec.threshold_digits = integer(node, key, 1, max_working_digits);
+      } else {
+        throw parse_error(m_file + ":" + std::to_string(root.member_lines[i]) + ": field " + key +
+                          ": unknown field (known: description, laws, gamma, g, digits, method, min_digits, "
+                          "solve_for, threshold_digits)");
+      }
+    }
+    if (!have_laws) fail(root, "laws", "missing: list the contact laws, e.g. \"laws\": [\"linear\", \"tsuji\"]");
+    validate(spec);  // digits, min_digits, laws
+    expand(spec);    // every axis error (bad numbers, gamma < 0, non-terminating steps) before any work
+    return spec;
+  }
+
+ private:
+  [[noreturn]] void fail(const spec_node& n, const std::string& field, const std::string& message) const {
+    throw parse_error(m_file + ":" + std::to_string(n.line) + ": field " + field + ": " + message);
+  }
+  std::string string(const spec_node& n, const std::string& field) const {
+    if (n.kind != spec_node::type::string) fail(n, field, "must be a string, got " + n.type_name());
+    return n.text;
+  }
+  // A number given as a JSON number or a string: its exact text.
+  std::string number_text(const spec_node& n, const std::string& field) const {
+    if (n.kind != spec_node::type::number && n.kind != spec_node::type::string)
+      fail(n, field, "must be a number (or a string holding one), got " + n.type_name());
+    if (!viscor::detail::looks_like_decimal(n.text))
+      fail(n, field, "must be a finite decimal number, got '" + n.text + "'");
+    return n.text;
+  }
+  long long integer(const spec_node& n, const std::string& field, long long lo, long long hi) const {
+    const std::string t = n.kind == spec_node::type::number ? n.text : std::string("x");
+    if (t.empty() || t.size() > 15 || t.find_first_not_of("0123456789-") != std::string::npos ||
+        t.find('-', 1) != std::string::npos || t == "-")
+      fail(n, field, "must be an integer, got " + (n.kind == spec_node::type::number ? "'" + n.text + "'" : n.type_name()));
+    const long long v = std::stoll(t);
+    if (v < lo || v > hi)
+      fail(n, field, "must be an integer from " + std::to_string(lo) + " to " + std::to_string(hi) + ", got " + t);
+    return v;
+  }
+
+  contact_law law(const spec_node& n, const std::string& field) const {
+    try {
+      if (n.kind == spec_node::type::string) return law_by_name(n.text);
+      if (n.kind != spec_node::type::object)
+        fail(n, field, "must be a law name or an object {\"alpha\": ..., \"beta\": ...}, got " + n.type_name());
+      std::string alpha, beta;
+      const spec_node *alpha_node = nullptr, *beta_node = nullptr;
+      for (std::size_t i = 0; i < n.members.size(); ++i) {
+        const auto& [key, value] = n.members[i];
+        if (key != "alpha" && key != "beta")
+          throw parse_error(m_file + ":" + std::to_string(n.member_lines[i]) + ": field " + field + "." + key +
+                            ": unknown field (a custom law has alpha and beta)");
+        if (value.kind != spec_node::type::number && value.kind != spec_node::type::string)
+          fail(value, field + "." + key, "must be a number or a fraction \"p/q\", got " + value.type_name());
+        (key == "alpha" ? alpha : beta) = value.text;
+        (key == "alpha" ? alpha_node : beta_node) = &value;
+      }
+      if (!alpha_node || !beta_node) fail(n, field, "a custom law needs both alpha and beta");
+      exponent a, b;
+      try {
+        a = exponent::parse(alpha, "alpha");
+      } catch (const invalid_parameter& e) {
+        fail(*alpha_node, field + ".alpha", e.what());
+      }
+      try {
+        b = exponent::parse(beta, "beta");
+      } catch (const invalid_parameter& e) {
+        fail(*beta_node, field + ".beta", e.what());
+      }
+      if (!(a.approximate() >= 1)) fail(*alpha_node, field + ".alpha", "must be >= 1, got " + alpha);
+      if (!(b.approximate() >= 1)) fail(*beta_node, field + ".beta", "must be >= 1, got " + beta);
+      return make_law(a, b);
+    } catch (const parse_error&) {
+      throw;
+    } catch (const invalid_parameter& e) {
+      fail(n, field, e.what());
+    }
+  }
+  std::vector<contact_law> laws(const spec_node& n, const std::string& field) const {
+    if (n.kind != spec_node::type::array) return {law(n, field)};
+    if (n.elements.empty()) fail(n, field, "at least one contact law is needed");
+    std::vector<contact_law> all;
+    for (std::size_t i = 0; i < n.elements.size(); ++i) {
+      const std::string f = field + "[" + std::to_string(i) + "]";
+      contact_law l = law(n.elements[i], f);
+      for (const auto& seen : all)
+        if (seen.alpha == l.alpha && seen.beta == l.beta) fail(n.elements[i], f, "this law is listed twice");
+      all.push_back(std::move(l));
+    }
+    return all;
+  }
+
+  axis_item item(const spec_node& n, const std::string& field) const {
+    axis_item it;
+    it.where = m_file + ":" + std::to_string(n.line);
+    if (n.kind != spec_node::type::object) {
+      it.type = axis_item::kind::value;
+      it.from = number_text(n, field);
+      return it;
+    }
+    std::string spacing = "linear";
+    bool have_from = false, have_to = false, have_count = false, have_digits = false;
+    for (std::size_t i = 0; i < n.members.size(); ++i) {
+      const auto& [key, value] = n.members[i];
+      const std::string f = field + "." + key;
+      it.field_where[key] = m_file + ":" + std::to_string(value.line);
+      if (key == "from") it.from = number_text(value, f), have_from = true;
+      else if (key == "to") it.to = number_text(value, f), have_to = true;
+      else if (key == "step") it.step = number_text(value, f);
+      else if (key == "count") it.count = integer(value, f, 2, max_axis_values), have_count = true;
+      else if (key == "spacing") spacing = string(value, f);
+      else if (key == "digits") it.log_digits = static_cast<int>(integer(value, f, 1, 30)), have_digits = true;
+      else
+        throw parse_error(m_file + ":" + std::to_string(n.member_lines[i]) + ": field " + f +
+                          ": unknown field (a range has from, to, and count or step; optional spacing "
+                          "\"linear\" or \"log\", and digits for log ranges)");
+    }
+    if (!have_from || !have_to) fail(n, field, "a range needs 'from' and 'to'");
+    if (spacing == "linear") {
+      it.type = axis_item::kind::linear;
+      if (have_count == !it.step.empty()) fail(n, field, "a linear range needs exactly one of 'count' and 'step'");
+      if (have_digits) fail(n, field + ".digits", "only log ranges round to digits");
+    } else if (spacing == "log") {
+      it.type = axis_item::kind::log;
+      if (!have_count || !it.step.empty()) fail(n, field, "a log range needs 'count' (and no 'step')");
+    } else {
+      fail(n, field + ".spacing", "must be \"linear\" or \"log\", got \"" + spacing + "\"");
+    }
+    return it;
+  }
+  grid_axis axis(const spec_node& n, const std::string& field) const {
+    grid_axis a;
+    if (n.kind != spec_node::type::array) {
+      a.items.push_back(item(n, field));
+      return a;
+    }
+    if (n.elements.empty()) fail(n, field, "an axis needs at least one value or range");
+    for (std::size_t i = 0; i < n.elements.size(); ++i)
+      a.items.push_back(item(n.elements[i], field + "[" + std::to_string(i) + "]"));
+    return a;
+  }
+
+  std::string m_file;
+};
+
+}  // namespace detail
+
+/// Parses spec JSON text; `file` names it in errors. Throws viscor::parse_error.
+inline grid_spec parse_spec_json(const std::string& text, const std::string& file) {
+  const char* furthest = text.data();
+  detail::counting_iterator first{text.data(), &furthest}, last{text.data() + text.size(), &furthest};
+  detail::spec_builder builder(text, file, &furthest);
+  nlohmann::json::sax_parse(first, last, &builder);
+  return detail::spec_reader(file).read(builder.root);
+}
+
+/// Reads a spec file. Throws viscor::error if it cannot be read, parse_error if malformed.
+inline grid_spec read_spec_json(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw error("cannot read spec file '" + path + "'");
+  std::stringstream s;
+  s << in.rdbuf();
+  return parse_spec_json(s.str(), path);
+}
+
+/// The spec as normalised JSON: what resume and merge compare, and what the
+/// sidecar records (source positions and formatting are left out).
+inline json spec_to_json(const grid_spec& spec) {
+  json j;
+  if (!spec.description.empty()) j["description"] = spec.description;
+  j["laws"] = json::array();
+  for (const auto& law : spec.laws) j["laws"].push_back(law_json(law));
+  auto axis_json = [](const grid_axis& axis) {
+    json a = json::array();
+    for (const auto& it : axis.items) {
+      json x;
+      if (it.type == axis_item::kind::value) {
+        x["value"] = it.from;
+      } else {
+        x["from"] = it.from, x["to"] = it.to;
+        if (it.step.empty()) x["count"] = it.count;
+        else x["step"] = it.step;
+        x["spacing"] = it.type == axis_item::kind::log ? "log" : "linear";
+        if (it.type == axis_item::kind::log) x["digits"] = it.log_digits;
+      }
+      a.push_back(x);
+    }
+    return a;
+  };
+  if (!spec.gamma.empty()) j["gamma"] = axis_json(spec.gamma);
+  if (!spec.g.empty()) j["g"] = axis_json(spec.g);
+  j["digits"] = spec.digits;
+  j["method"] = to_string(spec.method);
+  j["min_digits"] = spec.min_digits;
+  if (spec.threshold_digits > 0) {
+    j["solve_for"] = to_string(spec.solve_for);
+    j["threshold_digits"] = spec.threshold_digits;
+  }
+  return j;
+}
+
+}  // namespace viscor::cli

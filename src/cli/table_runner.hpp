@@ -1,0 +1,425 @@
+// Running a table: rows computed in parallel threads, each finished row appended
+// (one write(2) of one whole line) to OUT.partial, so a kill, Ctrl-C or a batch
+// scheduler's SIGTERM never loses or corrupts a finished row; --resume reads the
+// partial file back (dropping a line cut short) and computes only what is
+// missing. At the end the rows are sorted into grid order and the CSV and its
+// JSON sidecar are written to temporaries and renamed into place, so the CSV is
+// byte-identical however the run was split, interrupted or threaded.
+#pragma once
+
+#include "cli_common.hpp"
+
+#include <viscor/config.hpp>
+#include <viscor/reference_table.hpp>
+
+#include <algorithm>
+#include <atomic>
+#include <cerrno>
+#include <chrono>
+#include <condition_variable>
+#include <csignal>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <ctime>
+#include <exception>
+#include <fcntl.h>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <iomanip>
+#include <iostream>
+#include <mutex>
+#include <set>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <unistd.h>
+#include <vector>
+
+namespace viscor::cli {
+
+/// What to compute and where to put it.
+struct table_job {
+  table_kind kind = table_kind::cor;
+  std::string output;                   ///< OUT.csv
+  std::vector<std::int64_t> indices;    ///< grid indices of the rows of this run (its shard), ascending
+  std::function<std::string(std::size_t)> compute_line;  ///< CSV line of row indices[i] (thread-safe)
+  /// Sidecar fields (version, kind, spec, shard, scalar, method, ...); the
+  /// table_fingerprint of them must match for --resume and merge.
+  json provenance;
+  bool resume = false;
+  int threads = 1;
+  bool quiet = false;
+};
+
+/// What must agree between a partial run and its resumption, and (without
+/// "shard") between the shards of one table: everything that decides the rows.
+inline json table_fingerprint(const json& provenance) {
+  json f;
+  for (const char* key : {"viscor_version", "git_commit", "kind", "rows_total", "shard", "spec", "threshold"})
+    if (provenance.contains(key)) f[key] = provenance[key];
+  if (provenance.contains("scalar")) f["scalar"] = provenance["scalar"].value("type", "");
+  if (provenance.contains("method")) f["certify_available"] = provenance["method"].value("certify_available", false);
+  return f;
+}
+
+namespace detail {
+
+// Ctrl-C / SIGTERM: the first asks the workers to stop after their current row;
+// a second one exits at once (finished rows are already on disk).
+inline std::atomic<int> interrupts{0};
+static_assert(std::atomic<int>::is_always_lock_free, "the signal handler needs a lock-free counter");
+
+inline void on_interrupt(int) {
+  if (++interrupts >= 2) _exit(130);
+  static const char message[] =
+      "\nviscor table: interrupted: finishing the rows in progress (interrupt again to stop at once)\n";
+  const ssize_t ignored = ::write(2, message, sizeof message - 1);
+  (void)ignored;
+}
+
+/// Installs on_interrupt for SIGINT and SIGTERM for its lifetime.
+class interrupt_guard {
+ public:
+  interrupt_guard() {
+    interrupts = 0;
+    struct sigaction sa {};
+    sa.sa_handler = on_interrupt;
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGINT, &sa, &m_old_int);
+    sigaction(SIGTERM, &sa, &m_old_term);
+  }
+  ~interrupt_guard() {
+    sigaction(SIGINT, &m_old_int, nullptr);
+    sigaction(SIGTERM, &m_old_term, nullptr);
+  }
+  interrupt_guard(const interrupt_guard&) = delete;
+  interrupt_guard& operator=(const interrupt_guard&) = delete;
+
+ private:
+  struct sigaction m_old_int {}, m_old_term {};
+};
+
+inline std::string iso_time_utc(std::time_t t) {
+  std::tm tm{};
+  gmtime_r(&t, &tm);
+  char buffer[32];
+  std::strftime(buffer, sizeof buffer, "%Y-%m-%dT%H:%M:%SZ", &tm);
+  return buffer;
+}
+
+inline std::string host_name() {
+  char buffer[256] = {};
+  if (gethostname(buffer, sizeof buffer - 1) != 0) return "unknown";
+  return buffer;
+}
+
+/// The exact command line of this process (Linux /proc), shell-quoted.
+inline std::string command_line() {
+  std::ifstream in("/proc/self/cmdline", std::ios::binary);
+  std::string raw((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::string line;
+  std::size_t start = 0;
+  while (start < raw.size()) {
+    std::size_t end = raw.find('\0', start);
+    if (end == std::string::npos) end = raw.size();
+    std::string arg = raw.substr(start, end - start);
+    if (arg.empty() || arg.find_first_of(" \t\n'\"\\$`*?;&|<>()") != std::string::npos) {
+      std::string quoted = "'";
+      for (char c : arg) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+      arg = quoted + "'";
+    }
+    line += (line.empty() ? "" : " ") + arg;
+    start = end + 1;
+  }
+  return line;
+}
+
+inline std::string read_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw error("cannot read '" + path + "'");
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+inline json read_json_file(const std::string& path) {
+  try {
+    return json::parse(read_file(path));
+  } catch (const json::exception& e) {
+    throw parse_error(path + ": invalid JSON: " + e.what());
+  }
+}
+
+inline std::string duration_text(double seconds) {
+  if (!(seconds >= 0) || seconds > 1e9) return "--:--";
+  const long long s = static_cast<long long>(seconds + 0.5);
+  std::ostringstream out;
+  out << std::setfill('0');
+  if (s >= 3600) out << s / 3600 << ':' << std::setw(2) << (s / 60) % 60 << ':' << std::setw(2) << s % 60;
+  else out << std::setw(2) << s / 60 << ':' << std::setw(2) << s % 60;
+  return out.str();
+}
+
+/// Progress on standard error: a bar redrawn in place on a terminal, plain
+/// lines every `interval` seconds otherwise.
+class progress_meter {
+ public:
+  progress_meter(std::size_t total, std::size_t done_before, bool quiet)
+      : m_total(total), m_before(done_before), m_quiet(quiet), m_tty(isatty(2) != 0),
+        m_start(std::chrono::steady_clock::now()), m_last(m_start) {}
+
+  /// Call often; draws when due.
+  void update(std::size_t done_now, bool final = false) {
+    if (m_quiet) return;
+    const auto now = std::chrono::steady_clock::now();
+    const double since_last = std::chrono::duration<double>(now - m_last).count();
+    if (!final && since_last < (m_tty ? 0.2 : 5.0)) return;
+    m_last = now;
+    const double elapsed = std::chrono::duration<double>(now - m_start).count();
+    const std::size_t done = m_before + done_now;
+    const double rate = elapsed > 0 ? static_cast<double>(done_now) / elapsed : 0;
+    const double eta = rate > 0 ? static_cast<double>(m_total - done) / rate : -1;
+    std::ostringstream s;
+    s << done << '/' << m_total << " rows";
+    if (m_total > 0) s << " (" << std::fixed << std::setprecision(1) << 100.0 * static_cast<double>(done) / static_cast<double>(m_total) << "%)";
+    s << std::setprecision(rate >= 10 ? 0 : 2) << std::fixed << ", " << rate << " rows/s";
+    s << ", elapsed " << duration_text(elapsed) << ", ETA " << (done == m_total ? "00:00" : duration_text(eta));
+    if (m_tty) {
+      constexpr int width = 30;
+      const int filled = m_total ? static_cast<int>(width * done / m_total) : width;
+      std::cerr << "\r[" << std::string(static_cast<std::size_t>(filled), '#')
+                << std::string(static_cast<std::size_t>(width - filled), '.') << "] " << s.str() << "   "
+                << (final ? "\n" : "") << std::flush;
+    } else {
+      std::cerr << "viscor table: " << s.str() << '\n' << std::flush;
+    }
+  }
+
+ private:
+  std::size_t m_total, m_before;
+  bool m_quiet, m_tty;
+  std::chrono::steady_clock::time_point m_start, m_last;
+};
+
+/// Appends whole lines to a file with one write(2) each: a line is either
+/// entirely in the file or (if the process dies inside write) cut short at the end.
+class line_appender {
+ public:
+  explicit line_appender(const std::string& path) : m_path(path) {
+    m_fd = ::open(path.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
+    if (m_fd < 0) throw error("cannot open '" + path + "' for appending");
+  }
+  ~line_appender() { ::close(m_fd); }
+  line_appender(const line_appender&) = delete;
+  line_appender& operator=(const line_appender&) = delete;
+
+  void append(const std::string& line) {
+    const std::string data = line + "\n";
+    std::size_t written = 0;
+    while (written < data.size()) {
+      const ssize_t n = ::write(m_fd, data.data() + written, data.size() - written);
+      if (n < 0) {
+        if (errno == EINTR) continue;
+        throw error("writing to '" + m_path + "' failed");
+      }
+      written += static_cast<std::size_t>(n);
+    }
+  }
+
+ private:
+  std::string m_path;
+  int m_fd = -1;
+};
+
+inline void remove_file(const std::string& path) {
+  std::error_code ec;
+  std::filesystem::remove(path, ec);
+}
+
+}  // namespace detail
+
+/// Runs the job; throws viscor::error on failure or interruption (the partial
+/// file is then kept for --resume).
+inline void run_table_job(const table_job& job) {
+  using namespace std::chrono;
+  const std::string partial = job.output + ".partial", partial_meta = job.output + ".partial.json";
+  const auto wall_start = steady_clock::now();
+  const std::time_t started = std::time(nullptr);
+  const std::set<std::int64_t> wanted(job.indices.begin(), job.indices.end());
+  const json fingerprint = table_fingerprint(job.provenance);
+
+  // Rows already done by an interrupted run.
+  std::set<std::int64_t> done;
+  std::vector<csv_record> earlier;
+  json meta;
+  const bool have_partial = std::filesystem::exists(partial);
+  if (have_partial && !job.resume)
+    throw error("'" + partial + "' exists: an interrupted run of this table. Add --resume to continue it, or "
+                "delete it (and '" + partial_meta + "') to start afresh");
+  if (have_partial) {
+    if (!std::filesystem::exists(partial_meta))
+      throw error("cannot resume: '" + partial_meta + "' (what the partial run was computing) is missing");
+    meta = detail::read_json_file(partial_meta);
+    if (meta.value("fingerprint", json()) != fingerprint)
+      throw error("cannot resume: '" + partial + "' was made from a different spec, shard or viscor version "
+                  "(see '" + partial_meta + "'); delete both files to start afresh");
+    const csv_table table = read_table(partial, /*allow_truncated_tail=*/true);
+    if (table.kind != job.kind) throw parse_error(partial + ":1: wrong columns for this kind of table");
+    for (const auto& row : table.rows) {
+      if (!wanted.count(row.index))
+        throw parse_error(partial + ":" + std::to_string(row.line) + ": field index: row " +
+                          std::to_string(row.index) + " is not part of this run");
+      if (!done.insert(row.index).second)
+        throw parse_error(partial + ":" + std::to_string(row.line) + ": field index: row " +
+                          std::to_string(row.index) + " appears twice");
+      earlier.push_back(row);
+    }
+    // Rewrite without a line cut short by a kill, so appends start on a fresh line.
+    std::string clean = table_header(job.kind) + "\n";
+    for (const auto& row : earlier) clean += row.text + "\n";
+    output_options::write_atomically(partial, clean);
+    if (!job.quiet)
+      std::cerr << "viscor table: resuming: " << done.size() << " of " << job.indices.size()
+                << " rows already done" << (table.truncated_tail ? " (dropped one row cut short)" : "") << '\n';
+  } else {
+    // --resume of a run that already finished (a resubmitted batch job): nothing to do.
+    if (job.resume && std::filesystem::exists(job.output) && std::filesystem::exists(job.output + ".json")) {
+      bool complete = false;
+      try {
+        complete = table_fingerprint(detail::read_json_file(job.output + ".json")) == fingerprint &&
+                   read_table(job.output).rows.size() == job.indices.size();
+      } catch (const error&) {
+        complete = false;  // unreadable: compute it again
+      }
+      if (complete) {
+        if (!job.quiet) std::cerr << "viscor table: '" << job.output << "' is already complete; nothing to do\n";
+        return;
+      }
+    }
+    if (job.resume && !job.quiet) std::cerr << "viscor table: nothing to resume; computing every row\n";
+    meta["fingerprint"] = fingerprint;
+    meta["note"] = "an interrupted viscor table run: rerun the same command with --resume";
+    output_options::write_atomically(partial_meta, meta.dump(2) + "\n");
+    output_options::write_atomically(partial, table_header(job.kind) + "\n");
+  }
+  const double earlier_wall = meta.value("wall_time_seconds", 0.0);
+  const int earlier_sessions = meta.value("sessions", 0);
+
+  std::vector<std::size_t> pending;  // positions in job.indices
+  for (std::size_t i = 0; i < job.indices.size(); ++i)
+    if (!done.count(job.indices[i])) pending.push_back(i);
+
+  // Test hook: VISCOR_TABLE_STOP_AFTER=N makes the process interrupt itself
+  // (raise(SIGINT)) after N rows of this session, like a Ctrl-C.
+  long long stop_after = -1;
+  if (const char* s = std::getenv("VISCOR_TABLE_STOP_AFTER")) stop_after = std::atoll(s);
+
+  {
+    detail::interrupt_guard guard;
+    detail::line_appender out(partial);
+    detail::progress_meter progress(job.indices.size(), done.size(), job.quiet);
+    std::mutex mutex;
+    std::condition_variable wake;
+    std::atomic<std::size_t> next{0};
+    std::size_t finished = 0, running = 0;
+    std::exception_ptr failure;
+    std::atomic<bool> stop{false};
+
+    auto worker = [&] {
+      for (;;) {
+        if (stop || detail::interrupts > 0) return;
+        const std::size_t k = next++;
+        if (k >= pending.size()) return;
+        std::string line;
+        try {
+          line = job.compute_line(pending[k]);
+          std::lock_guard lock(mutex);
+          out.append(line);
+          ++finished;
+          if (stop_after >= 0 && static_cast<long long>(finished) == stop_after) std::raise(SIGINT);
+        } catch (...) {
+          std::lock_guard lock(mutex);
+          if (!failure) failure = std::current_exception();
+          stop = true;
+        }
+        wake.notify_all();
+      }
+    };
+    const std::size_t n_threads =
+        std::max<std::size_t>(1, std::min<std::size_t>(static_cast<std::size_t>(job.threads), pending.size()));
+    std::vector<std::thread> pool;
+    const std::size_t n_workers = pending.empty() ? 0 : n_threads;
+    running = n_workers;  // NOTE: set before any worker starts; each one decrements it when done
+    for (std::size_t t = 0; t < n_workers; ++t)
+      pool.emplace_back([&] {
+        worker();
+        std::lock_guard lock(mutex);
+        --running;
+        wake.notify_all();
+      });
+    {
+      std::unique_lock lock(mutex);
+      while (running > 0) {
+        wake.wait_for(lock, milliseconds(200));
+        progress.update(finished);
+      }
+    }
+    for (auto& t : pool) t.join();
+    progress.update(finished, /*final=*/true);
+
+    const double wall = duration<double>(steady_clock::now() - wall_start).count();
+    const bool interrupted = detail::interrupts > 0;
+    if (failure || interrupted) {
+      meta["wall_time_seconds"] = earlier_wall + wall;
+      meta["sessions"] = earlier_sessions + 1;
+      output_options::write_atomically(partial_meta, meta.dump(2) + "\n");
+      const std::string kept = std::to_string(done.size() + finished) + " of " +
+                               std::to_string(job.indices.size()) + " rows are done and kept in '" + partial + "'";
+      if (failure) {
+        try {
+          std::rethrow_exception(failure);
+        } catch (const error& e) {
+          throw error(std::string(e.what()) + "\n  " + kept + "; fix the cause and rerun with --resume");
+        } catch (const std::exception& e) {
+          throw error(std::string("internal error: ") + e.what() + "\n  " + kept);
+        }
+      }
+      throw error("interrupted: " + kept + "; rerun the same command with --resume to continue");
+    }
+  }
+
+  // All rows done: sort into grid order and publish CSV, then sidecar.
+  const csv_table table = read_table(partial);
+  const std::string text = table_text(job.kind, table.rows, partial);
+  if (table.rows.size() != job.indices.size())
+    throw error("internal error: '" + partial + "' holds " + std::to_string(table.rows.size()) + " rows, expected " +
+                std::to_string(job.indices.size()));
+  std::size_t exact_rows = 0, certified_rows = 0;
+  for (const auto& row : table.rows) (row.fields.back() == "exact" ? exact_rows : certified_rows)++;
+
+  const double wall = duration<double>(steady_clock::now() - wall_start).count();
+  json sidecar;
+  sidecar["table"] = std::filesystem::path(job.output).filename().string();
+  for (auto it = job.provenance.begin(); it != job.provenance.end(); ++it) sidecar[it.key()] = it.value();
+  sidecar["rows"] = table.rows.size();
+  sidecar["rows_by_method"] = {{"exact", exact_rows}, {"certified", certified_rows}};
+  sidecar["command_line"] = detail::command_line();
+  sidecar["host"] = detail::host_name();
+  sidecar["date"] = detail::iso_time_utc(started);
+  sidecar["threads"] = job.threads;
+  sidecar["wall_time_seconds"] = earlier_wall + wall;
+  sidecar["sessions"] = earlier_sessions + 1;
+  sidecar["rows_from_earlier_sessions"] = done.size();
+
+  output_options::write_atomically(job.output, text);
+  output_options::write_atomically(job.output + ".json", sidecar.dump(2) + "\n");
+  detail::remove_file(partial);
+  detail::remove_file(partial_meta);
+  if (!job.quiet)
+    std::cerr << "viscor table: wrote " << job.output << " (" << table.rows.size() << " rows) and " << job.output
+              << ".json in " << std::fixed << std::setprecision(2) << wall << " s\n";
+}
+
+}  // namespace viscor::cli

@@ -1,0 +1,172 @@
+// viscor::certify: honesty on the exact cases and a small random sample (the big
+// sweeps are in certification_slow_test.cpp), the 45-digit floor at 50 digits on
+// representative points, loud disagreement under a perturbed method, outcome
+// disagreement, and absolute digits near the sticking threshold.
+#include "certification_test_utils.hpp"
+#include "test_utils.hpp"
+
+#include <gtest/gtest.h>
+
+namespace {
+
+using namespace viscor;
+using viscor::test::check_honesty;
+
+TEST(certification, honest_on_every_exact_case_in_double) {
+  for (const auto& p : test::exact_sample_points()) check_honesty<double>(p);
+}
+
+#if VISCOR_HAS_MPFR
+TEST(certification, honest_on_exact_cases_at_50_digits) {
+  const auto points = test::exact_sample_points();
+  for (std::size_t i = 0; i < points.size(); i += 3) check_honesty<mpfr_50>(points[i]);
+}
+#endif
+
+TEST(certification, honest_on_a_random_sample_in_double) {
+  for (const auto& p : test::random_sample_points(24, 20240611u)) check_honesty<double>(p);
+}
+
+#if VISCOR_HAS_MPFR
+TEST(certification, at_least_45_digits_at_50_for_named_laws) {
+  // Representative points of the acceptance grid (the full grid is in the slow test).
+  for (const auto& n : named_laws) {
+    for (auto [gamma, g] : {std::pair{"0.05", "1"}, std::pair{"1e-3", "0.05"}}) {
+      const auto c = certify<mpfr_50>(law_by_name(n.name), mpfr_50(gamma), mpfr_50(g));
+      EXPECT_TRUE(c.outcome_certified) << n.name << " gamma = " << gamma << " g = " << g;
+      EXPECT_GE(c.digits, 45) << n.name << " gamma = " << gamma << " g = " << g;
+      EXPECT_LE(c.digits, 50);
+      ASSERT_EQ(c.computations.size(), 3u);
+      EXPECT_EQ(c.computations[0].source, certified_source::taylor);
+      EXPECT_EQ(c.computations[1].source, certified_source::taylor_reference);
+      EXPECT_EQ(c.computations[2].source, certified_source::adaptive);
+      EXPECT_GT(c.computations[1].precision_digits, 50);
+    }
+  }
+}
+#endif
+
+TEST(certification, a_perturbed_method_makes_certification_drop) {
+  // A deliberately wrong damping coefficient (relative 1e-8) in one computation.
+  const contact_law kk = law_by_name("kuwabara_kono");
+  const auto clean = certify<double>(kk, 0.05, 1.0);
+  ASSERT_TRUE(clean.outcome_certified);
+  ASSERT_GE(clean.digits, 12);
+  for (auto which : {certified_source::taylor, certified_source::taylor_reference, certified_source::adaptive}) {
+    certify_options options;
+    options.perturb = which;
+    options.perturbation = "1e-8";
+    const auto c = certify<double>(kk, 0.05, 1.0, options);
+    EXPECT_LE(c.digits, 8) << to_string(which);
+    EXPECT_LT(c.digits, clean.digits - 3) << to_string(which);
+  }
+}
+
+#if VISCOR_HAS_MPFR
+TEST(certification, a_perturbed_method_makes_certification_drop_at_50_digits) {
+  certify_options options;
+  options.perturb = certified_source::adaptive;
+  options.perturbation = "1e-30";
+  const auto c = certify<mpfr_50>(law_by_name("tsuji"), mpfr_50("0.05"), mpfr_50(1), options);
+  EXPECT_TRUE(c.outcome_certified);
+  EXPECT_LE(c.digits, 30);
+  EXPECT_GE(c.digits, 20);  // the other two still agree: the drop is the perturbation's size
+}
+#endif
+
+TEST(certification, outcome_disagreement_is_uncertified_not_averaged) {
+  // Linear law, g = 1: gamma = 0.1 rebounds, gamma = 1.1 sticks; perturb the adaptive run's gamma by 10x.
+  certify_options options;
+  options.perturb = certified_source::adaptive;
+  options.perturbation = "10";
+  const auto c = certify<double>(law_by_name("linear"), 0.1, 1.0, options);
+  EXPECT_FALSE(c.outcome_certified);
+  EXPECT_EQ(c.digits, 0);
+  EXPECT_EQ(c.absolute_digits_e, 0);
+  EXPECT_TRUE(c.near_sticking);
+  EXPECT_EQ(c.computations[2].outcome, impact_outcome::stick);
+  EXPECT_EQ(c.computations[0].outcome, impact_outcome::rebound);
+}
+
+TEST(certification, near_the_sticking_threshold_absolute_digits_are_reported) {
+  // Linear law, g = 0, gamma just below 2: e = exp(-xi pi/omega) ~ 7e-5.
+  const auto c = certify<double>(law_by_name("linear"), 1.9, 0.0);
+  ASSERT_TRUE(c.outcome_certified);
+  EXPECT_EQ(c.outcome, impact_outcome::rebound);
+  EXPECT_TRUE(c.near_sticking);
+  EXPECT_GE(c.absolute_digits_e, 13);
+  const auto exact = exact_linear(1.9, 0.0);
+  using std::abs;
+  EXPECT_LE(abs(c.e - exact.e), std::pow(10.0, -c.absolute_digits_e));
+}
+
+TEST(certification, sticking_outcome_is_certified_with_exact_e) {
+  const auto c = certify<double>(law_by_name("kuwabara_kono"), 0.06, 4.0);  // report Fig. 4
+  EXPECT_TRUE(c.outcome_certified);
+  EXPECT_EQ(c.outcome, impact_outcome::stick);
+  EXPECT_EQ(c.e, 0);
+  EXPECT_EQ(c.one_minus_e, 1);
+  EXPECT_GE(c.digits, 10);  // the contact time (turning back) and u_max agree
+}
+
+#if VISCOR_HAS_MPFR
+TEST(certification, schwager_poschel_coefficients_from_certified_e) {
+  // Kuwabara-Kono, g = 0: e = 1 - C0 gamma - C2 gamma^2 + O(gamma^3) (report eq. (36)
+  // with (39), (40)). f(gamma) = (1 - e)/gamma from certified 1 - e at gamma = i * 1e-8,
+  // i = 1..5; the degree-4 interpolant gives C0 = f(0) and C2 = f'(0) (error ~ 1e-32).
+  // Expected values: the closed forms after eq. (40), evaluated independently (the
+  // report's printed c1 = -1.15448854 has two digits swapped, see ERRATA.md).
+  using R = mpfr_50;
+  const R C0("1.730173287142933198695851158"), C2("-1.796099762125789664063");
+  const contact_law kk = law_by_name("kuwabara_kono");
+  std::vector<R> x, f;
+  for (int i = 1; i <= 5; ++i) {
+    const R gamma = R(i) / R(100000000);
+    const auto c = certify<R>(kk, gamma, R(0));
+    ASSERT_TRUE(c.outcome_certified);
+    ASSERT_GE(c.digits_one_minus_e - c.safety_margin, 40);
+    x.push_back(gamma);
+    f.push_back(c.one_minus_e / gamma);
+  }
+  R value = 0, slope = 0;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    R l = 1, sum = 0;
+    for (std::size_t j = 0; j < x.size(); ++j) {
+      if (j == i) continue;
+      l *= (0 - x[j]) / (x[i] - x[j]);
+      sum += 1 / (0 - x[j]);
+    }
+    value += f[i] * l;
+    slope += f[i] * l * sum;
+  }
+  EXPECT_PRED_FORMAT3(viscor::test::relative_close, value, C0, R(1e-25));
+  EXPECT_PRED_FORMAT3(viscor::test::relative_close, slope, C2, R(1e-20));
+}
+#endif
+
+TEST(certification, typed_errors) {
+  const contact_law kk = law_by_name("kuwabara_kono");
+  EXPECT_THROW(certify<double>(kk, -0.1, 0.0), invalid_parameter);
+  certify_options options;
+  options.reference_digits = 10;
+  EXPECT_THROW(certify<double>(kk, 0.1, 0.0, options), invalid_parameter);
+  options.reference_digits = 0;
+  options.safety_margin = -1;
+  EXPECT_THROW(certify<double>(kk, 0.1, 0.0, options), invalid_parameter);
+}
+
+#if VISCOR_HAS_MPFR
+TEST(certification, run_time_precision_and_explicit_reference_precision) {
+  scoped_precision precision(30);
+  certify_options options;
+  options.reference_digits = 70;  // 2 * 30 + 10, through mpfr_real
+  const auto c = certify<mpfr_real>(law_by_name("hunt_crossley"), mpfr_real("1e-3"), mpfr_real(0), options);
+  EXPECT_EQ(c.working_digits, 30);
+  EXPECT_EQ(c.computations[1].precision_digits, 70);
+  EXPECT_GE(c.digits, 26);
+  EXPECT_LE(c.digits, 30);
+  EXPECT_LE(c.e.precision(), 31u) << "results are rounded to the caller's precision";
+}
+#endif
+
+}  // namespace

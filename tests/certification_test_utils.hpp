@@ -1,0 +1,132 @@
+// Shared by certification_test.cpp and certification_slow_test.cpp: the honesty
+// check (certified digits never exceed the digits that agree with an independent
+// truth) and the random parameter sample.
+#pragma once
+
+#include <viscor/certification.hpp>
+#include <viscor/exact_solutions.hpp>
+#include <viscor/taylor_impact.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace viscor::test {
+
+struct sample_point {
+  contact_law law;
+  std::string gamma, g;  ///< decimal text: exact in every type under test
+  std::string describe() const { return law.describe() + ", gamma = " + gamma + ", g = " + g; }
+};
+
+/// Every exact-solution case of the foundation issue (linear law at any g; beta =
+/// alpha + 1 and Tsuji at g = 0; gamma = 0).
+inline std::vector<sample_point> exact_sample_points() {
+  std::vector<sample_point> points;
+  const contact_law linear = law_by_name("linear");
+  for (const char* g : {"0", "0.05", "1", "10"})
+    for (const char* gamma : {"1e-8", "1e-3", "0.1", "0.5", "1.5"}) points.push_back({linear, gamma, g});
+  for (auto [p, q] : {std::pair{1, 1}, std::pair{3, 2}, std::pair{2, 1}}) {
+    const contact_law hc{exponent::rational(p, q), exponent::rational(p + q, q), ""};
+    for (const char* gamma : {"1e-8", "1e-3", "0.1", "1.5"}) points.push_back({hc, gamma, "0"});
+  }
+  for (const char* gamma : {"1e-8", "1e-3", "0.1", "1.5"}) points.push_back({law_by_name("tsuji"), gamma, "0"});
+  for (const auto& n : named_laws) points.push_back({law_by_name(n.name), "0", "1"});
+  return points;
+}
+
+/// `count` random points, fixed seed: named laws or random rational exponents p/q in
+/// [1, 3] (q <= 6), gamma log-uniform in [1e-8, 2], g uniform in [0, 100]; all
+/// printed with 6 significant digits so that they are exact decimal inputs.
+inline std::vector<sample_point> random_sample_points(int count, std::uint32_t seed) {
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<int> pick_law(0, 7), pick_q(1, 6);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<sample_point> points;
+  auto text = [](double x) {
+    std::ostringstream out;
+    out.precision(6);
+    out << x;
+    return out.str();
+  };
+  auto random_exponent = [&] {
+    const int q = pick_q(rng);
+    std::uniform_int_distribution<int> pick_p(q, 3 * q);
+    return exponent::rational(pick_p(rng), q);
+  };
+  for (int i = 0; i < count; ++i) {
+    const int which = pick_law(rng);
+    contact_law law = which < 5 ? law_by_name(named_laws[which].name) : contact_law{random_exponent(), random_exponent(), ""};
+    const double gamma = std::pow(10.0, -8.0 + unit(rng) * (8.0 + std::log10(2.0)));
+    const double g = 100.0 * unit(rng);
+    points.push_back({law, text(gamma), text(g)});
+  }
+  return points;
+}
+
+/// Digits on which x agrees with the truth t (relative), in the reference type; 1000 if equal.
+template <class Ref>
+int true_digits(const Ref& x, const Ref& t) {
+  using boost::math::isinf;
+  using std::abs;
+  using std::floor;
+  using std::log10;
+  if (isinf(x) || isinf(t)) return x == t ? 1000 : 0;
+  if (x == t) return 1000;
+  if (t == 0) return 0;
+  const Ref d = floor(-log10(Ref(abs(x - t) / abs(t))));
+  return d <= 0 ? 0 : static_cast<int>(d);
+}
+
+/// Certifies the point in Real and fails the test on a single over-claim: the
+/// certified digits must not exceed the digits on which e, 1 - e and T_f agree with
+/// the exact solution, or else with a Taylor solve at 2 * digits + 10 (mpfr_real).
+/// Returns the certified digits.
+template <class Real>
+int check_honesty(const sample_point& p) {
+  SCOPED_TRACE(p.describe());
+  const Real gamma = parse_real<Real>(p.gamma, "gamma"), g = parse_real<Real>(p.g, "g");
+  const certified_result<Real> c = certify<Real>(p.law, gamma, g);
+  const int reference_digits = 2 * decimal_digits<Real>() + 10;
+  scoped_precision precision(reference_digits);
+  const mpfr_real rg = detail::to_work<mpfr_real>(gamma), rgg = detail::to_work<mpfr_real>(g);
+  impact_outcome truth_outcome;
+  mpfr_real truth_e, truth_one_minus_e, truth_time;
+  bool time_known = true;
+  std::string source;
+  if (const auto exact = exact_cor<mpfr_real>(p.law, rg, rgg)) {
+    truth_outcome = exact->outcome, truth_e = exact->e, truth_one_minus_e = exact->one_minus_e;
+    time_known = exact->contact_time.has_value();
+    if (time_known) truth_time = *exact->contact_time;
+    source = exact->formula;
+  } else {
+    const auto t = solve_impact_taylor<mpfr_real>(p.law, rg, rgg, solve_options<mpfr_real>{});
+    truth_outcome = t.outcome, truth_e = t.e, truth_one_minus_e = t.one_minus_e, truth_time = t.contact_time;
+    source = "taylor at " + std::to_string(reference_digits) + " digits";
+  }
+  SCOPED_TRACE("truth: " + source);
+  if (!c.outcome_certified) {
+    EXPECT_EQ(c.digits, 0) << "an uncertified outcome carries no digits";
+    return 0;
+  }
+  if (c.outcome != truth_outcome) {
+    ADD_FAILURE() << "certified outcome " << to_string(c.outcome) << " but the truth is " << to_string(truth_outcome);
+    return c.digits;
+  }
+  int agree = 1000;
+  if (c.outcome == impact_outcome::rebound) {
+    agree = std::min(agree, true_digits(detail::to_work<mpfr_real>(c.e), truth_e));
+    agree = std::min(agree, true_digits(detail::to_work<mpfr_real>(c.one_minus_e), truth_one_minus_e));
+  }
+  if (time_known) agree = std::min(agree, true_digits(detail::to_work<mpfr_real>(c.contact_time), truth_time));
+  EXPECT_LE(c.digits, agree) << "over-claim: certified " << c.digits << " digits, " << agree << " are right; e = "
+                             << to_decimal_string(c.e) << ", truth " << to_decimal_string(truth_e);
+  EXPECT_LE(c.digits, decimal_digits<Real>());
+  return c.digits;
+}
+
+}  // namespace viscor::test
