@@ -1,4 +1,4 @@
-// extern template declarations for what src/instantiations.cpp compiles once,
+// extern template declarations for what src/instantiation.cpp.in compiles once per type,
 // in the style of heyoka's HEYOKA_TAYLOR_ADAPTIVE_EXTERN_INST.
 #pragma once
 

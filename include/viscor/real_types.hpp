@@ -60,7 +60,7 @@ constexpr bool has_fixed_precision() {
 
 }  // namespace viscor
 
-// X-macro over the scalar types compiled into libviscor (src/instantiations.cpp).
+// X-macro over the scalar types compiled into libviscor (src/instantiation.cpp.in).
 #if VISCOR_HAS_FLOAT128
 #define VISCOR_FOR_EACH_QUAD(X) X(::viscor::quad)
 #else
