@@ -12,6 +12,7 @@ packages=(
   libbenchmark-dev          # Google Benchmark
   libcli11-dev              # command line
   nlohmann-json3-dev        # JSON output and sidecars
+  python3-matplotlib        # tools/plot_reference.py figures
 )
 
 missing=()
