@@ -8,7 +8,8 @@ viscor=${1:-build/viscor}
 threads=${2:-$(nproc)}
 cd "$(dirname "$0")/.."
 for spec in reference_data/cor_report_grid.json reference_data/cor_report_g10_*.json \
-            reference_data/cor_gamma_sweep.json reference_data/cor_g_sweep.json; do
+            reference_data/cor_gamma_sweep.json reference_data/cor_g_sweep.json \
+            reference_data/cor_error_map_grid.json; do
   echo "== $spec"
   "$viscor" table "$spec" -o "${spec%.json}.csv" --threads "$threads" --resume
 done

@@ -12,6 +12,7 @@
 // The method assumes one threshold: rebound below it, sticking above it.
 #pragma once
 
+#include <viscor/exceptions.hpp>
 #include <viscor/table_row.hpp>
 
 #include <cmath>
@@ -46,13 +47,21 @@ threshold_result<Real> sticking_threshold(const contact_law& law, threshold_vari
                             std::to_string(settings.digits - 5) + ", got " + std::to_string(digits_wanted));
   threshold_result<Real> r;
   // Certified outcome at x (nullopt: not certifiable).
+  // NOTE: a solver may refuse to decide (certification_error): within a hair of
+  // the threshold the bead turns at u_s ~ 0, where the energy that separates a
+  // stop from a return, P(u_s), is below the working precision. That point is
+  // as uncertain as an uncertified one, not a failure of the whole search.
   auto sticks = [&](const Real& x) -> std::optional<bool> {
-    const point_result<Real> p =
-        for_g ? evaluate_point(law, fixed, x, settings) : evaluate_point(law, x, fixed, settings);
     ++r.evaluations;
-    r.source = p.source;
-    if (!p.outcome_certified) return std::nullopt;
-    return p.outcome == impact_outcome::stick;
+    try {
+      const point_result<Real> p =
+          for_g ? evaluate_point(law, fixed, x, settings) : evaluate_point(law, x, fixed, settings);
+      r.source = p.source;
+      if (!p.outcome_certified) return std::nullopt;
+      return p.outcome == impact_outcome::stick;
+    } catch (const certification_error&) {
+      return std::nullopt;
+    }
   };
   auto certain = [&](const Real& x) -> bool {
     const std::optional<bool> s = sticks(x);
@@ -91,11 +100,20 @@ threshold_result<Real> sticking_threshold(const contact_law& law, threshold_vari
   };
   const int max_halvings = 4 * binary_digits<Real>();
   for (int i = 0; i < max_halvings && bracket_digits(digits_wanted) < digits_wanted; ++i) {
-    const Real mid = (lo + hi) / 2;
-    if (mid == lo || mid == hi) break;  // working precision exhausted
-    const std::optional<bool> s = sticks(mid);
-    if (!s) break;  // too close to the threshold to certify: stop with fewer digits
-    (*s ? hi : lo) = mid;
+    // The midpoint, or if its outcome cannot be certified (it fell too close to
+    // the threshold), points at 3/8, 5/8, 1/4, 3/4 of the bracket: any certified
+    // point narrows it.
+    bool narrowed = false;
+    for (const int eighths : {4, 3, 5, 2, 6}) {
+      const Real x = lo + (hi - lo) * eighths / 8;
+      if (x == lo || x == hi) continue;  // working precision exhausted
+      const std::optional<bool> s = sticks(x);
+      if (!s) continue;
+      (*s ? hi : lo) = x;
+      narrowed = true;
+      break;
+    }
+    if (!narrowed) break;  // too close to the threshold to certify: stop with fewer digits
   }
   r.rebound_at = lo, r.stick_at = hi;
   r.digits = bracket_digits(digits_wanted);

@@ -1,0 +1,333 @@
+// viscor bench: the speed-accuracy trade, measured. For each method -- the double
+// approximations, the Taylor solve in double, long double, float128 and MPFR at
+// chosen digits, certify, and evaluate at a few tolerances -- the median time per
+// CoR and the error against a reference, over a fixed point set per law.
+//
+// Point set per law: gamma in {1e-3, 1e-2, 0.1} x g in {0, 0.05, 1}, taken with
+// their reference values from a committed certified table (--table, by default
+// reference_data/cor_report_grid.csv, 30-34 certified digits). Methods more
+// precise than the table are measured against solve_impact at (largest digits
+// benchmarked + 20) digits, which must first agree with the table to every
+// certified digit: the table anchors the reference, the solve extends it.
+// Relative errors are over the rebounding points (e > 0) only.
+#include "cli_common.hpp"
+#include "command_registry.hpp"
+
+#include <viscor/error_map.hpp>
+#include <viscor/evaluate.hpp>
+#include <viscor/reference_table.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <sstream>
+#include <tuple>
+
+namespace viscor::cli {
+namespace {
+
+using clock_type = std::chrono::steady_clock;
+
+struct bench_point {
+  contact_law law;
+  std::string gamma, g;
+  std::string e_table;  // certified, from the table
+  int table_digits = 0;
+  std::string e_ref;  // at the reference precision, checked against e_table
+};
+
+// The table row of (law, gamma, g): e and its certified digits.
+std::pair<std::string, int> table_value(const csv_table& t, const std::string& file, const contact_law& law,
+                                        const std::string& gamma, const std::string& g) {
+  const auto& cols = table_columns(table_kind::cor);
+  auto col = [&](const char* name) { return static_cast<std::size_t>(std::find(cols.begin(), cols.end(), name) - cols.begin()); };
+  for (const auto& row : t.rows)
+    if (row.fields[col("alpha")] == law.alpha.to_string() && row.fields[col("beta")] == law.beta.to_string() &&
+        row.fields[col("gamma")] == gamma && row.fields[col("g")] == g)
+      return {row.fields[col("e")], std::stoi(row.fields[col("digits")])};
+  throw invalid_parameter("--table " + file + " has no row for " + law.describe() + ", gamma = " + gamma +
+                          ", g = " + g + " (the bench's point set)");
+}
+
+// One method, prepared at a point: `compute` is what is timed (inputs parsed and
+// per-law constants built beforehand, as a caller in a loop would have them);
+// `text` gives the last result as decimal text. nullopt: does not apply there.
+struct prepared {
+  std::function<void()> compute;
+  std::function<std::string()> text;
+};
+
+struct bench_method {
+  std::string name, precision;
+  std::function<std::optional<prepared>(const bench_point&)> prepare;
+};
+
+struct bench_row {
+  std::string name, precision;
+  double median_seconds = 0;
+  std::string max_abs, median_abs, max_rel, median_rel;
+  int points = 0;
+};
+
+// Seconds per call of f: repeated until min_time has passed (at least once).
+template <class F>
+double time_per_call(F&& f, double min_time) {
+  int calls = 0;
+  const auto start = clock_type::now();
+  double elapsed = 0;
+  do {
+    f();
+    ++calls;
+    elapsed = std::chrono::duration<double>(clock_type::now() - start).count();
+  } while (elapsed < min_time);
+  return elapsed / calls;
+}
+
+// Taylor in Real (for mpfr_real: at the precision current when called).
+template <class Real>
+prepared taylor_at(const bench_point& p) {
+  struct state {
+    contact_law law;
+    Real gamma, g, e;
+  };
+  auto st = std::make_shared<state>(state{p.law, parse_real<Real>(p.gamma, "gamma"), parse_real<Real>(p.g, "g"), Real(0)});
+  return {[st] { st->e = solve_impact(st->law, st->gamma, st->g).e; }, [st] { return to_decimal_string(st->e); }};
+}
+
+#if VISCOR_HAS_MPFR
+// Runs f with mpfr_real at d digits (MPFR even where float128 would do).
+template <class F>
+auto in_mpfr(int d, F&& f) {
+  scoped_precision precision(d);
+  return f();
+}
+#endif
+
+struct bench_command {
+  output_options output;
+  std::string laws = "linear,hertz_linear_damping,tsuji,kuwabara_kono,hunt_crossley";
+  std::string precisions = "30,50,100,200";
+  std::string maps;
+  std::string table = "reference_data/cor_report_grid.csv";
+  bool certified = false;
+  double min_time = 0.02;
+
+  std::vector<bench_method> methods(const std::map<std::string, std::shared_ptr<error_map>>& loaded) const {
+    std::vector<bench_method> out;
+    auto approximations_of = [](const contact_law& law) {
+      // NOTE: the per-law constants are built once per law and kept, as a DEM code would.
+      static std::map<std::string, std::shared_ptr<cor_approximations<double>>> cache;
+      auto& c = cache[law.describe()];
+      if (!c) c = std::make_shared<cor_approximations<double>>(law);
+      return c;
+    };
+    for (auto a : all_approximations) {
+      out.push_back({"approx " + to_string(a), "double", [a, approximations_of](const bench_point& p) -> std::optional<prepared> {
+                       const auto c = approximations_of(p.law);
+                       const double gamma = std::strtod(p.gamma.c_str(), nullptr), g = std::strtod(p.g.c_str(), nullptr);
+                       if (!approximate_e(*c, a, gamma, g)) return std::nullopt;
+                       auto e = std::make_shared<double>(0);
+                       return prepared{[=] { *e = *approximate_e(*c, a, gamma, g); },
+                                       [e] { return to_decimal_string(*e); }};
+                     }});
+    }
+    out.push_back({"taylor", "double", [](const bench_point& p) { return std::optional<prepared>(taylor_at<double>(p)); }});
+    out.push_back(
+        {"taylor", "long double", [](const bench_point& p) { return std::optional<prepared>(taylor_at<long double>(p)); }});
+#if VISCOR_HAS_FLOAT128
+    out.push_back({"taylor", "float128", [](const bench_point& p) { return std::optional<prepared>(taylor_at<quad>(p)); }});
+#endif
+#if VISCOR_HAS_MPFR
+    for (int d : digit_list()) {
+      out.push_back({"taylor", "mpfr " + std::to_string(d), [d](const bench_point& p) -> std::optional<prepared> {
+                       const prepared inner = in_mpfr(d, [&] { return taylor_at<mpfr_real>(p); });
+                       // NOTE: printed inside the scope too: to_decimal_string reads the digits from it.
+                       return prepared{[d, inner] { in_mpfr(d, inner.compute); },
+                                       [d, inner] { return in_mpfr(d, inner.text); }};
+                     }});
+    }
+#endif
+    if (certified) {
+      out.push_back({"certify", "double", [](const bench_point& p) -> std::optional<prepared> {
+                       auto e = std::make_shared<double>(0);
+                       const double gamma = std::strtod(p.gamma.c_str(), nullptr), g = std::strtod(p.g.c_str(), nullptr);
+                       const contact_law law = p.law;
+                       return prepared{[=] { *e = certify(law, gamma, g).e; }, [e] { return to_decimal_string(*e); }};
+                     }});
+      for (int d : digit_list())
+        out.push_back({"certify", "mpfr " + std::to_string(d), [d](const bench_point& p) -> std::optional<prepared> {
+                         auto e = std::make_shared<std::string>();
+                         const bench_point q = p;
+                         return prepared{[=] {
+                                           in_mpfr(d, [&] {
+                                             *e = to_decimal_string(certify(q.law, parse_real<mpfr_real>(q.gamma, "gamma"),
+                                                                            parse_real<mpfr_real>(q.g, "g")).e);
+                                           });
+                                         },
+                                         [e] { return *e; }};
+                       }});
+    }
+    for (const char* tol : {"1e-4", "1e-10"}) {
+      const double t = std::strtod(tol, nullptr);
+      out.push_back({std::string("evaluate ") + tol + (loaded.empty() ? "" : " (maps)"), "double",
+                     [t, &loaded](const bench_point& p) -> std::optional<prepared> {
+                       evaluate_options o;
+                       const auto it = loaded.find(p.law.name);
+                       if (it != loaded.end()) o.map = it->second.get();
+                       auto ev = std::make_shared<evaluator<double>>(p.law, o);
+                       auto e = std::make_shared<double>(0);
+                       const double gamma = std::strtod(p.gamma.c_str(), nullptr), g = std::strtod(p.g.c_str(), nullptr);
+                       return prepared{[=] { *e = (*ev)(gamma, g, t).e; }, [e] { return to_decimal_string(*e); }};
+                     }});
+    }
+    return out;
+  }
+
+  std::vector<int> digit_list() const {
+    std::vector<int> out;
+    std::stringstream in(precisions);
+    for (std::string item; std::getline(in, item, ',');) {
+      if (item.empty()) continue;
+      if (item.find_first_not_of("0123456789") != std::string::npos)
+        throw invalid_parameter("--precisions expects comma-separated digit counts, got '" + item + "'");
+      out.push_back(std::stoi(item));
+    }
+    return out;
+  }
+
+  void run() const {
+    if (!(min_time >= 0)) throw invalid_parameter("--min-time must be >= 0");
+    std::vector<contact_law> law_list;
+    {
+      std::stringstream in(laws);
+      for (std::string item; std::getline(in, item, ',');) law_list.push_back(law_by_name(item));
+    }
+    std::map<std::string, std::shared_ptr<error_map>> loaded;
+    if (!maps.empty())
+      for (const auto& law : law_list) {
+        const auto path = std::filesystem::path(maps) / (law.name + ".csv");
+        if (std::filesystem::exists(path)) loaded[law.name] = std::make_shared<error_map>(read_error_map(path.string()));
+      }
+    const std::vector<int> digits = digit_list();
+    const int ref_digits = (digits.empty() ? 40 : *std::max_element(digits.begin(), digits.end())) + 20;
+
+    const csv_table reference_table = read_table(table);
+    if (reference_table.kind != table_kind::cor) throw invalid_parameter("--table " + table + " is not a CoR table");
+    const auto start = clock_type::now();
+    std::vector<bench_point> points;
+    int least_table_digits = 1000000;
+    for (const auto& law : law_list)
+      for (const char* gamma : {"0.001", "0.01", "0.1"})
+        for (const char* g : {"0", "0.05", "1"}) {
+          bench_point p{law, gamma, g, "", 0, ""};
+          std::tie(p.e_table, p.table_digits) = table_value(reference_table, table, law, gamma, g);
+          least_table_digits = std::min(least_table_digits, p.table_digits);
+          p.e_ref = with_working_precision(ref_digits, [&]<class Real>() {
+            const prepared r = taylor_at<Real>(p);
+            r.compute();
+            const std::string e = r.text();
+            using std::abs;
+            using std::pow;
+            const Real certified = parse_real<Real>(p.e_table, "e"), extended = parse_real<Real>(e, "e");
+            // p.table_digits significant digits: |error| < 10^(1 - digits) |e| (e = 0: a certified stick).
+            const Real allowed = Real(pow(Real(10), 1 - p.table_digits)) * abs(certified);
+            if (!(abs(extended - certified) <= allowed))
+              throw certification_error("bench: solve_impact at " + std::to_string(ref_digits) + " digits gives e = " + e +
+                                        " at " + law.describe() + ", gamma = " + gamma + ", g = " + g +
+                                        ", outside the certified " + p.e_table + " of " + table);
+            return e;
+          });
+          points.push_back(p);
+        }
+    const double reference_seconds = std::chrono::duration<double>(clock_type::now() - start).count();
+
+    std::vector<bench_row> rows;
+    for (const bench_method& m : methods(loaded)) {
+      std::vector<double> times;
+      std::vector<std::string> results;
+      std::vector<const bench_point*> used;
+      for (const auto& p : points) {
+        const std::optional<prepared> run = m.prepare(p);
+        if (!run) continue;
+        times.push_back(time_per_call(run->compute, min_time));
+        results.push_back(run->text());
+        used.push_back(&p);
+      }
+      bench_row row;
+      row.name = m.name, row.precision = m.precision, row.points = static_cast<int>(used.size());
+      if (!used.empty()) {
+        std::sort(times.begin(), times.end());
+        row.median_seconds = times[times.size() / 2];
+        with_working_precision(ref_digits, [&]<class Ref>() {
+          using std::abs;
+          std::vector<Ref> abs_err, rel_err;
+          for (std::size_t i = 0; i < used.size(); ++i) {
+            const Ref ref = parse_real<Ref>(used[i]->e_ref, "reference");
+            const Ref err = abs(parse_real<Ref>(results[i], "e") - ref);
+            abs_err.push_back(err);
+            if (ref > 0) rel_err.push_back(Ref(err / ref));
+          }
+          auto summarize = [](std::vector<Ref>& v, std::string& max, std::string& median) {
+            if (v.empty()) return;
+            std::sort(v.begin(), v.end());
+            max = to_decimal_string(v.back(), 2), median = to_decimal_string(v[v.size() / 2], 2);
+          };
+          summarize(abs_err, row.max_abs, row.median_abs);
+          summarize(rel_err, row.max_rel, row.median_rel);
+        });
+      }
+      rows.push_back(row);
+    }
+
+    std::ostringstream text;
+    char buffer[64];
+    text << "| method | precision | median time per CoR | max abs error | median abs error | max rel error | "
+            "median rel error | points |\n|---|---|---|---|---|---|---|---|\n";
+    json j;
+    j["command"] = "bench";
+    j["laws"] = laws;
+    const std::string reference_text = "certified table " + table + " (>= " + std::to_string(least_table_digits) +
+                                       " digits), extended by solve_impact at " + std::to_string(ref_digits) +
+                                       " digits, which agrees with it to every certified digit";
+    j["reference"] = reference_text;
+    j["points_per_law"] = 9;
+    j["reference_seconds"] = reference_seconds;
+    json rows_json = json::array();
+    for (const auto& r : rows) {
+      std::snprintf(buffer, sizeof buffer, "%.3g s", r.median_seconds);
+      text << "| " << r.name << " | " << r.precision << " | " << (r.points ? buffer : "-") << " | " << r.max_abs
+           << " | " << r.median_abs << " | " << r.max_rel << " | " << r.median_rel << " | " << r.points << " |\n";
+      json o;
+      o["method"] = r.name, o["precision"] = r.precision, o["median_seconds"] = r.median_seconds;
+      o["max_abs_error"] = r.max_abs, o["median_abs_error"] = r.median_abs;
+      o["max_rel_error"] = r.max_rel, o["median_rel_error"] = r.median_rel, o["points"] = r.points;
+      rows_json.push_back(o);
+    }
+    j["rows"] = rows_json;
+    text << "\nreference: " << reference_text << "; points gamma in {1e-3, 1e-2, 0.1} x g in {0, 0.05, 1} for " << laws << " (" << points.size() << " points, " << reference_seconds
+         << " s); relative errors over the rebounding points\n";
+    output.emit(text.str(), j);
+  }
+};
+
+void setup(CLI::App& app) {
+  auto cmd = std::make_shared<bench_command>();
+  cmd->output.add_to(app);
+  app.add_option("--laws", cmd->laws, "comma-separated named laws")->capture_default_str();
+  app.add_option("--precisions", cmd->precisions, "MPFR digits to benchmark (e.g. 30,50,100,200,1000)")
+      ->capture_default_str();
+  app.add_flag("--certified", cmd->certified, "also benchmark certify (double and each MPFR precision)");
+  app.add_option("--error-maps", cmd->maps, "directory of error maps for the evaluate rows");
+  app.add_option("--table", cmd->table, "certified CoR table holding the point set (reference values)")
+      ->capture_default_str();
+  app.add_option("--min-time", cmd->min_time, "seconds of repetitions per point and method")->capture_default_str();
+  app.callback([cmd] { cmd->run(); });
+}
+
+const registration reg{"bench", "median time per CoR and accuracy of every method", setup};
+
+}  // namespace
+}  // namespace viscor::cli

@@ -1,0 +1,217 @@
+// viscor scene FILE.json: every impact of a scene (scene.hpp) to the scene's
+// tolerance, one row per impact (CSV, or JSON with --json or -o OUT.json).
+// Output goes to a file only when every impact succeeded (write then rename).
+#include "cli_common.hpp"
+#include "command_registry.hpp"
+#include "scene_json.hpp"
+
+#include <viscor/error_map.hpp>
+#include <viscor/scene.hpp>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+#include <sstream>
+
+namespace viscor::cli {
+namespace {
+
+// Full-precision decimal; double formatted directly (the same text as to_decimal_string, 10x faster).
+template <class Real>
+std::string full(const Real& x) {
+  if constexpr (std::is_same_v<Real, double>) {
+    char buffer[40];
+    std::snprintf(buffer, sizeof buffer, "%.16e", x);
+    return buffer;
+  } else {
+    return to_decimal_string(x);
+  }
+}
+
+template <class Real>
+std::string short_number(const Real& x) {
+  if constexpr (std::is_same_v<Real, double>) {
+    char buffer[40];
+    std::snprintf(buffer, sizeof buffer, "%.2e", x);
+    return buffer;
+  } else {
+    return to_decimal_string(x, 3);
+  }
+}
+
+std::string seconds_text(double s) {
+  char buffer[40];
+  std::snprintf(buffer, sizeof buffer, "%.3g", s);
+  return buffer;
+}
+
+/// The error map of `law` in `dir` (dir/<law name>.csv), if there is one.
+std::optional<error_map> find_map(const std::string& dir, const contact_law& law, std::string& note) {
+  if (dir.empty()) {
+    note = "none (no --error-maps, scene error_maps or VISCOR_ERROR_MAPS): approximations not used";
+    return std::nullopt;
+  }
+  if (law.name.empty()) {
+    note = "none for a custom law: approximations not used";
+    return std::nullopt;
+  }
+  const std::filesystem::path path = std::filesystem::path(dir) / (law.name + ".csv");
+  if (!std::filesystem::exists(path)) {
+    note = "none (" + path.string() + " does not exist): approximations not used";
+    return std::nullopt;
+  }
+  note = path.string();
+  return read_error_map(path.string());
+}
+
+struct scene_command {
+  output_options output;
+  std::string path, maps;
+
+  void run() const {
+    const scene_file file = read_scene_json(path);
+    int digits = 0;
+    try {
+      digits = scene_digits(file.scene.tolerance);
+    } catch (const invalid_parameter& e) {
+      throw parse_error(file.locate("tolerance") + e.what());
+    }
+    std::string dir = maps;
+    if (dir.empty()) dir = file.error_maps;
+    if (dir.empty())
+      if (const char* env = std::getenv("VISCOR_ERROR_MAPS")) dir = env;
+    std::string map_note;
+    const std::optional<error_map> map = find_map(dir, file.scene.law, map_note);
+    const bool as_json = output.json || (output.path.size() >= 5 && output.path.substr(output.path.size() - 5) == ".json");
+
+    with_working_precision(digits, [&]<class Real>() {
+      const auto start = std::chrono::steady_clock::now();
+      resolved_scene<Real> s;
+      try {
+        s = resolve_scene<Real>(file.scene);
+      } catch (const invalid_parameter& e) {
+        throw parse_error(file.locate(e.what()) + e.what());
+      }
+      const auto resolved = std::chrono::steady_clock::now();
+
+      std::string csv;
+      json rows = json::array();
+      std::map<std::string, std::size_t> methods;
+      std::size_t index = 0, sticking = 0;
+      double evaluation_seconds = 0;
+      Real worst_bound = 0;
+      if (!as_json) {
+        csv.reserve(s.velocities.size() * 200);
+        csv += std::string("index,v0,gamma,g,outcome,sticking,e,one_minus_e,contact_time,") +
+               (s.relative ? "error_bound_relative" : "error_bound") + ",method,digits,seconds\n";
+      }
+      run_scene(s, map ? &*map : nullptr, [&](const scene_row<Real>& row) {
+        const evaluation<Real>& r = row.result;
+        const bool stuck = r.outcome == impact_outcome::stick;
+        ++methods[to_string(r.method)];
+        sticking += stuck;
+        evaluation_seconds += r.seconds;
+        if (r.error_bound > worst_bound) worst_bound = r.error_bound;
+        const std::string t = row.contact_time ? full(*row.contact_time) : std::string();
+        if (as_json) {
+          json j;
+          j["index"] = index, j["v0"] = full(row.v0), j["gamma"] = full(row.gamma), j["g"] = full(row.g);
+          j["outcome"] = std::string(to_string(r.outcome)), j["sticking"] = stuck;
+          j["e"] = full(r.e), j["one_minus_e"] = full(r.one_minus_e);
+          j["contact_time"] = row.contact_time ? json(t) : json(nullptr);
+          j["error_bound"] = short_number(r.error_bound);
+          j["method"] = to_string(r.method), j["digits"] = r.digits, j["seconds"] = r.seconds;
+          rows.push_back(std::move(j));
+        } else {
+          csv += std::to_string(index) + ',' + full(row.v0) + ',' + full(row.gamma) + ',' + full(row.g) + ',' +
+                 std::string(to_string(r.outcome)) + ',' + (stuck ? "true" : "false") + ',' + full(r.e) + ',' +
+                 full(r.one_minus_e) + ',' + t + ',' + short_number(r.error_bound) + ',' + to_string(r.method) +
+                 ',' + std::to_string(r.digits) + ',' + seconds_text(r.seconds) + '\n';
+        }
+        ++index;
+      });
+      const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      const double resolve_seconds = std::chrono::duration<double>(resolved - start).count();
+
+      std::ostringstream method_text;
+      json method_json;
+      for (const auto& [m, n] : methods) {
+        method_text << " " << m << " " << n;
+        method_json[m] = n;
+      }
+      std::ostringstream summary;
+      summary << "scene      " << path << (file.description.empty() ? "" : " (" + file.description + ")") << "\n"
+              << "law        " << s.law.describe() << "\n"
+              << "bead       m = " << to_decimal_string(s.mass, 8) << " kg, k = " << to_decimal_string(s.stiffness, 8)
+              << (s.stiffness_from_material ? " N/m^1.5 (Hertz, from the materials)" : "") << "\n"
+              << "damping    gamma0 = " << to_decimal_string(s.gamma0, 12);
+      if (s.calibration)
+        summary << " (calibrated: e = " << *file.scene.measured_e << " at v0 = " << *file.scene.measured_speed
+                << " m/s, gravity " << *file.scene.measured_gravity << " at " << s.calibration->digits
+                << " digits: scaled gamma " << s.calibration->gamma << " at g " << s.calibration->g
+                << ", |e - measured| <= " << s.calibration->e_error << ")";
+      summary << "\n"
+              << "load       gravity = " << file.scene.gravity << " m/s^2, F = " << file.scene.force << " N\n"
+              << "impacts    " << index << " at tolerance " << file.scene.tolerance
+              << (s.relative ? " (relative on 1 - e)" : " (absolute on e)") << ", " << decimal_digits<Real>()
+              << " working digits\n"
+              << "error map  " << map_note << "\n"
+              << "methods   " << method_text.str() << "\n"
+              << "sticking   " << sticking << "\n"
+              << "max bound  " << to_decimal_string(worst_bound, 3) << "\n"
+              << "time       " << seconds_text(total) << " s (" << seconds_text(evaluation_seconds)
+              << " s evaluating, " << seconds_text(resolve_seconds) << " s resolving the scene)\n";
+
+      std::string body;
+      if (as_json) {
+        json j;
+        j["command"] = "scene";
+        j["file"] = path;
+        j["law"] = law_json(s.law);
+        j["mass"] = full(s.mass), j["stiffness"] = full(s.stiffness), j["gamma0"] = full(s.gamma0);
+        if (s.calibration) {
+          json c;
+          c["measured_e"] = *file.scene.measured_e, c["speed"] = *file.scene.measured_speed;
+          c["gravity"] = *file.scene.measured_gravity;
+          c["gamma0"] = s.calibration->gamma0;
+          c["gamma"] = s.calibration->gamma, c["g"] = s.calibration->g;
+          c["e_error"] = s.calibration->e_error, c["digits"] = s.calibration->digits;
+          j["calibration"] = c;
+        }
+        j["gravity"] = file.scene.gravity, j["force"] = file.scene.force;
+        j["tolerance"] = file.scene.tolerance;
+        j["bound"] = s.relative ? "relative_one_minus_e" : "absolute";
+        j["digits"] = decimal_digits<Real>();
+        j["error_map"] = map_note;
+        j["impacts"] = index, j["sticking"] = sticking, j["methods"] = method_json;
+        j["seconds"] = total;
+        j["rows"] = std::move(rows);
+        body = j.dump(1) + "\n";
+      } else {
+        body = std::move(csv);
+      }
+      if (output.path.empty()) {
+        std::cout << body << std::flush;
+      } else {
+        output_options::write_atomically(output.path, body);
+        std::cout << summary.str() << "output     " << output.path << (as_json ? " (json)" : " (csv)") << "\n";
+      }
+    });
+  }
+};
+
+void setup(CLI::App& app) {
+  auto cmd = std::make_shared<scene_command>();
+  app.add_option("file", cmd->path, "scene file (JSON; format in docs/scenes.md)")->required();
+  cmd->output.add_to(app);
+  app.add_option("--error-maps", cmd->maps,
+                 "directory of error maps <law>.csv (default: the scene's error_maps, then $VISCOR_ERROR_MAPS)");
+  app.callback([cmd] { cmd->run(); });
+}
+
+const registration reg{"scene", "evaluate every impact of a scene file to its tolerance", setup};
+
+}  // namespace
+}  // namespace viscor::cli

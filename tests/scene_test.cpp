@@ -1,0 +1,132 @@
+// Scenes (scene.hpp): Hertz stiffness and mass from materials, resolution of a
+// description (errors naming the field), the calibrate-then-evaluate round trip,
+// and rows in physical units.
+#include "test_utils.hpp"
+
+#include <viscor/exact_solutions.hpp>
+#include <viscor/extern_templates.hpp>
+#include <viscor/scene.hpp>
+
+#include <string>
+
+namespace viscor {
+namespace {
+
+using test::relative_close;
+
+scene_description steel_bead() {
+  scene_description d;
+  d.law = law_by_name("kuwabara_kono");
+  d.density = "7850", d.radius = "4e-3", d.youngs_modulus = "2.0e11", d.poisson_ratio = "0.3";
+  d.gamma0 = "8.5e-7";
+  d.gravity = "9.8";
+  d.velocities = {"0.1", "0.246", "1"};
+  d.tolerance = "1e-6";
+  return d;
+}
+
+TEST(scene, hertz_stiffness_and_mass_from_materials) {
+  // Expected values computed independently (Python, double): k = (4/3) E* sqrt(R).
+  scene_description d = steel_bead();
+  resolved_scene<double> rigid = resolve_scene<double>(d);
+  EXPECT_TRUE(rigid.stiffness_from_material);
+  EXPECT_PRED_FORMAT3(relative_close<double>, rigid.stiffness, 18533495444.210281, 1e-14);
+  EXPECT_PRED_FORMAT3(relative_close<double>, rigid.mass, 0.0021044481988846827, 1e-14);
+  d.wall_youngs_modulus = "2.0e11", d.wall_poisson_ratio = "0.3";
+  EXPECT_PRED_FORMAT3(relative_close<double>, resolve_scene<double>(d).stiffness, 9266747722.1051407, 1e-14);
+  d.wall_youngs_modulus = "7.0e10", d.wall_poisson_ratio = "0.22";
+  EXPECT_PRED_FORMAT3(relative_close<double>, resolve_scene<double>(d).stiffness, 4647601211.7006321, 1e-14);
+#if VISCOR_HAS_MPFR
+  // The same at 50 digits: the closed form in mpfr, against the same formula in mpfr (no double inside).
+  const resolved_scene<mpfr_50> r50 = resolve_scene<mpfr_50>(d);
+  const mpfr_50 e_star = 1 / ((1 - mpfr_50("0.09")) / mpfr_50("2.0e11") + (1 - mpfr_50("0.0484")) / mpfr_50("7.0e10"));
+  EXPECT_PRED_FORMAT3(relative_close<mpfr_50>, r50.stiffness, mpfr_50(4 * e_star * sqrt(mpfr_50("4e-3")) / 3),
+                      mpfr_50(1e-48));
+#endif
+}
+
+TEST(scene, resolution_errors_name_the_field) {
+  auto message = [](const scene_description& d) {
+    try {
+      resolve_scene<double>(d);
+    } catch (const invalid_parameter& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  scene_description d = steel_bead();
+  d.density = "-7850";
+  EXPECT_NE(message(d).find("bead.density must be > 0"), std::string::npos) << message(d);
+  d = steel_bead();
+  d.poisson_ratio = "0.6";
+  EXPECT_NE(message(d).find("bead.poisson_ratio must be in (-1, 1/2)"), std::string::npos) << message(d);
+  d = steel_bead();
+  d.mass = "1e-3";
+  EXPECT_NE(message(d).find("not both"), std::string::npos) << message(d);
+  d = steel_bead();
+  d.law = law_by_name("linear");
+  EXPECT_NE(message(d).find("alpha = 3/2"), std::string::npos) << message(d);
+  d = steel_bead();
+  d.tolerance = "0";
+  EXPECT_NE(message(d).find("tolerance must be > 0"), std::string::npos) << message(d);
+  d = steel_bead();
+  d.velocities = {"0.1", "-1"};
+  EXPECT_NE(message(d).find("velocities[1] must be > 0"), std::string::npos) << message(d);
+  d = steel_bead();
+  d.gamma0.reset();
+  EXPECT_NE(message(d).find("missing field damping"), std::string::npos) << message(d);
+  d.measured_e = "1.2", d.measured_speed = "0.2", d.measured_gravity = "9.8";
+  EXPECT_NE(message(d).find("damping.measured_e: target_e = 1.2"), std::string::npos) << message(d);
+  EXPECT_NE(message(d).find("is unreachable"), std::string::npos) << message(d);
+  d = steel_bead();
+  d.density.reset(), d.radius.reset(), d.youngs_modulus.reset(), d.poisson_ratio.reset();
+  EXPECT_NE(message(d).find("missing field bead"), std::string::npos) << message(d);
+  d.mass = "-1", d.stiffness = "1e9";
+  EXPECT_NE(message(d).find("bead.mass must be > 0"), std::string::npos) << message(d);
+}
+
+// Acceptance: calibrate gamma0 from e, evaluate with that gamma0, get e back.
+TEST(scene, calibrate_then_evaluate_round_trip) {
+  for (const char* tolerance : {"1e-4", "1e-10"}) {
+    scene_description d = steel_bead();
+    d.gamma0.reset();
+    d.measured_e = "0.893", d.measured_speed = "0.246", d.measured_gravity = "9.8";
+    d.tolerance = tolerance;
+    d.velocities = {"0.05", "0.246"};
+    const resolved_scene<double> s = resolve_scene<double>(d);
+    ASSERT_TRUE(s.calibration.has_value());
+    std::vector<scene_row<double>> rows;
+    run_scene(s, nullptr, [&](const scene_row<double>& r) { rows.push_back(r); });
+    ASSERT_EQ(rows.size(), 2u);
+    const double tol = std::strtod(tolerance, nullptr);
+    EXPECT_LE(std::abs(rows[1].result.e - 0.893), tol) << "tolerance " << tolerance;
+    EXPECT_LE(rows[1].result.error_bound, tol);
+    EXPECT_GT(rows[0].result.e, rows[1].result.e);  // slower impacts lose less (KK: gamma grows with v0)
+  }
+}
+
+TEST(scene, rows_in_physical_units_match_eq_2) {
+  // The linear law has closed forms: check e and the physical contact time T * T_f.
+  scene_description d;
+  d.law = law_by_name("linear");
+  d.mass = "0.01", d.stiffness = "1e4", d.gamma0 = "1e-3", d.gravity = "9.8", d.force = "0.05";
+  d.velocity_from = "0.1", d.velocity_to = "1", d.velocity_count = 4, d.velocity_log = true;
+  d.tolerance = "1e-9";
+  d.contact_time = true;
+  const resolved_scene<double> s = resolve_scene<double>(d);
+  ASSERT_EQ(s.velocities.size(), 4u);
+  EXPECT_PRED_FORMAT3(relative_close<double>, s.velocities[1], std::pow(10.0, -2.0 / 3), 1e-15);
+  run_scene(s, nullptr, [&](const scene_row<double>& row) {
+    // eq. (2) for alpha = beta = 1: T = sqrt(m/k), gamma = gamma0 sqrt(k/m), g = (gravity + F/m) T / v0.
+    const double T = std::sqrt(0.01 / 1e4);
+    EXPECT_PRED_FORMAT3(relative_close<double>, row.gamma, 1e-3 * std::sqrt(1e4 / 0.01), 1e-14);
+    EXPECT_PRED_FORMAT3(relative_close<double>, row.g, (9.8 + 0.05 / 0.01) * T / row.v0, 1e-14);
+    const auto exact = exact_cor(law_by_name("linear"), row.gamma, row.g);
+    EXPECT_LE(std::abs(row.result.e - exact->e), row.result.error_bound);
+    ASSERT_TRUE(row.contact_time.has_value());
+    EXPECT_PRED_FORMAT3(relative_close<double>, *row.contact_time, *exact->contact_time * T, 1e-9);
+  });
+}
+
+}  // namespace
+}  // namespace viscor
