@@ -109,7 +109,7 @@ TEST(scene_cli, bad_scenes_name_the_field_and_write_nothing) {
       {"missing gravity of the measurement", with(", \"gravity\": 9.8}", "}"), "field damping.gravity: missing"},
       {"misspelt field", with("\"gravity\": 9.8,\n", "\"gravty\": 9.8,\n"), ":6: field gravty: unknown field"},
       {"missing bead", with("\"bead\": {\"mass\": 2.05e-3, \"stiffness\": 6.9716e9},", ""), "missing field bead"},
-      {"bad number", with("\"stiffness\": 6.9716e9", "\"stiffness\": \"lots\""), ":4: field bead.stiffness: must be a decimal"},
+      {"bad number", with("\"stiffness\": 6.9716e9", "\"stiffness\": \"lots\""), ":4: field bead.stiffness: must be a finite decimal number, got 'lots'"},
       {"negative speed", with("[0.05, 0.246, 1]", "[0.05, -0.246, 1]"), ":7: parameter velocities[1] must be > 0"},
       {"not JSON", "{\"law\": \"linear\",\n \"bead\": }", "invalid JSON at line 2"},
   };

@@ -41,9 +41,9 @@ struct scene_file {
 
 namespace detail {
 
-class scene_reader {
+class scene_reader : public node_reader {
  public:
-  explicit scene_reader(const std::string& file) : m_file(file) {}
+  using node_reader::node_reader;
 
   scene_file read(const spec_node& root) {
     scene_file out;
@@ -55,7 +55,7 @@ class scene_reader {
       const auto& [key, node] = root.members[i];
       out.lines[key] = root.member_lines[i];
       if (key == "description" || key == "comment") {
-        out.description = text(node, key);
+        out.description = string(node, key);
       } else if (key == "law") {
         d.law = law(node, out);
         have_law = true;
@@ -66,16 +66,16 @@ class scene_reader {
       } else if (key == "damping") {
         damping(node, d, out);
       } else if (key == "gravity") {
-        d.gravity = number(node, key);
+        d.gravity = number_text(node, key);
       } else if (key == "force") {
-        d.force = number(node, key);
+        d.force = number_text(node, key);
       } else if (key == "velocities") {
         velocities(node, d, out);
       } else if (key == "tolerance") {
-        d.tolerance = number(node, key);
+        d.tolerance = number_text(node, key);
         have_tolerance = true;
       } else if (key == "bound") {
-        const std::string b = text(node, key);
+        const std::string b = string(node, key);
         if (b == "absolute") d.relative = false;
         else if (b == "relative_one_minus_e") d.relative = true;
         else fail(node, key, "must be \"absolute\" or \"relative_one_minus_e\", got \"" + b + "\"");
@@ -83,7 +83,7 @@ class scene_reader {
         if (node.kind != spec_node::type::boolean) fail(node, key, "must be true or false, got " + node.type_name());
         d.contact_time = node.flag;
       } else if (key == "error_maps") {
-        const std::filesystem::path p = text(node, key);
+        const std::filesystem::path p = string(node, key);
         out.error_maps = p.is_absolute() ? p.string() : (std::filesystem::path(m_file).parent_path() / p).string();
       } else {
         fail(node, key,
@@ -97,24 +97,6 @@ class scene_reader {
   }
 
  private:
-  [[noreturn]] void fail(const spec_node& node, const std::string& field, const std::string& what) const {
-    throw parse_error(m_file + ":" + std::to_string(node.line) + ": field " + field + ": " + what);
-  }
-
-  std::string text(const spec_node& node, const std::string& field) const {
-    if (node.kind != spec_node::type::string) fail(node, field, "must be a string, got " + node.type_name());
-    return node.text;
-  }
-
-  // A number as its exact source text; strings holding a number are accepted too
-  // (for precisions beyond what the writer's JSON library keeps).
-  std::string number(const spec_node& node, const std::string& field) const {
-    if (node.kind != spec_node::type::number && node.kind != spec_node::type::string)
-      fail(node, field, "must be a number, got " + node.type_name());
-    if (!viscor::detail::looks_like_decimal(node.text))
-      fail(node, field, "must be a decimal number, got \"" + node.text + "\"");
-    return node.text;
-  }
 
   template <class F>
   void members(const spec_node& node, const std::string& field, scene_file& out, F&& each) const {
@@ -152,12 +134,12 @@ class scene_reader {
 
   void bead(const spec_node& node, scene_description& d, scene_file& out) const {
     members(node, "bead", out, [&](const std::string& key, const spec_node& v, const std::string& path) {
-      if (key == "mass") d.mass = number(v, path);
-      else if (key == "stiffness") d.stiffness = number(v, path);
-      else if (key == "density") d.density = number(v, path);
-      else if (key == "radius") d.radius = number(v, path);
-      else if (key == "youngs_modulus") d.youngs_modulus = number(v, path);
-      else if (key == "poisson_ratio") d.poisson_ratio = number(v, path);
+      if (key == "mass") d.mass = number_text(v, path);
+      else if (key == "stiffness") d.stiffness = number_text(v, path);
+      else if (key == "density") d.density = number_text(v, path);
+      else if (key == "radius") d.radius = number_text(v, path);
+      else if (key == "youngs_modulus") d.youngs_modulus = number_text(v, path);
+      else if (key == "poisson_ratio") d.poisson_ratio = number_text(v, path);
       else fail(v, path, "unknown field (known: mass, stiffness, density, radius, youngs_modulus, poisson_ratio)");
     });
   }
@@ -168,8 +150,8 @@ class scene_reader {
       return;
     }
     members(node, "wall", out, [&](const std::string& key, const spec_node& v, const std::string& path) {
-      if (key == "youngs_modulus") d.wall_youngs_modulus = number(v, path);
-      else if (key == "poisson_ratio") d.wall_poisson_ratio = number(v, path);
+      if (key == "youngs_modulus") d.wall_youngs_modulus = number_text(v, path);
+      else if (key == "poisson_ratio") d.wall_poisson_ratio = number_text(v, path);
       else fail(v, path, "unknown field (known: youngs_modulus, poisson_ratio)");
     });
     if (!d.wall_youngs_modulus || !d.wall_poisson_ratio) fail(node, "wall", "needs youngs_modulus and poisson_ratio");
@@ -177,11 +159,11 @@ class scene_reader {
 
   void damping(const spec_node& node, scene_description& d, scene_file& out) const {
     members(node, "damping", out, [&](const std::string& key, const spec_node& v, const std::string& path) {
-      if (key == "gamma0") d.gamma0 = number(v, path);
-      else if (key == "measured_e") d.measured_e = number(v, path);
-      else if (key == "speed") d.measured_speed = number(v, path);
-      else if (key == "gravity") d.measured_gravity = number(v, path);
-      else if (key == "force") d.measured_force = number(v, path);
+      if (key == "gamma0") d.gamma0 = number_text(v, path);
+      else if (key == "measured_e") d.measured_e = number_text(v, path);
+      else if (key == "speed") d.measured_speed = number_text(v, path);
+      else if (key == "gravity") d.measured_gravity = number_text(v, path);
+      else if (key == "force") d.measured_force = number_text(v, path);
       else fail(v, path, "unknown field (known: gamma0; or measured_e, speed, gravity, force)");
     });
     const bool measured = d.measured_e || d.measured_speed || d.measured_gravity || d.measured_force;
@@ -199,7 +181,7 @@ class scene_reader {
       for (std::size_t i = 0; i < node.elements.size(); ++i) {
         const std::string path = "velocities[" + std::to_string(i) + "]";
         out.lines[path] = node.elements[i].line;
-        d.velocities.push_back(number(node.elements[i], path));
+        d.velocities.push_back(number_text(node.elements[i], path));
       }
       if (d.velocities.empty()) fail(node, "velocities", "is empty");
       return;
@@ -207,17 +189,17 @@ class scene_reader {
     bool have_count = false;
     members(node, "velocities", out, [&](const std::string& key, const spec_node& v, const std::string& path) {
       if (key == "from") {
-        d.velocity_from = number(v, path);
+        d.velocity_from = number_text(v, path);
       } else if (key == "to") {
-        d.velocity_to = number(v, path);
+        d.velocity_to = number_text(v, path);
       } else if (key == "count") {
-        const std::string t = number(v, path);
+        const std::string t = number_text(v, path);
         if (t.find_first_not_of("0123456789") != std::string::npos || t.size() > 9 || std::stol(t) < 1)
           fail(v, path, "must be a whole number from 1 to 999999999, got " + t);
         d.velocity_count = static_cast<std::size_t>(std::stol(t));
         have_count = true;
       } else if (key == "spacing") {
-        const std::string s = text(v, path);
+        const std::string s = string(v, path);
         if (s == "log") d.velocity_log = true;
         else if (s == "linear") d.velocity_log = false;
         else fail(v, path, "must be \"linear\" or \"log\", got \"" + s + "\"");
@@ -229,7 +211,6 @@ class scene_reader {
       fail(node, "velocities", "a range needs from, to and count");
   }
 
-  std::string m_file;
 };
 
 }  // namespace detail

@@ -167,10 +167,36 @@ class spec_builder : public nlohmann::json_sax<nlohmann::json> {
   std::size_t m_key_line = 0;
 };
 
-/// Interprets the tree as a grid_spec.
-class spec_reader {
+/// Field access shared by the readers of JSON files (specs, scenes): every error
+/// names the file, the line and the field.
+class node_reader {
  public:
-  explicit spec_reader(const std::string& file) : m_file(file) {}
+  explicit node_reader(const std::string& file) : m_file(file) {}
+
+ protected:
+  [[noreturn]] void fail(const spec_node& n, const std::string& field, const std::string& message) const {
+    throw parse_error(m_file + ":" + std::to_string(n.line) + ": field " + field + ": " + message);
+  }
+  std::string string(const spec_node& n, const std::string& field) const {
+    if (n.kind != spec_node::type::string) fail(n, field, "must be a string, got " + n.type_name());
+    return n.text;
+  }
+  // A number given as a JSON number or a string: its exact text.
+  std::string number_text(const spec_node& n, const std::string& field) const {
+    if (n.kind != spec_node::type::number && n.kind != spec_node::type::string)
+      fail(n, field, "must be a number (or a string holding one), got " + n.type_name());
+    if (!viscor::detail::looks_like_decimal(n.text))
+      fail(n, field, "must be a finite decimal number, got '" + n.text + "'");
+    return n.text;
+  }
+
+  std::string m_file;
+};
+
+/// Interprets the tree as a grid_spec.
+class spec_reader : public node_reader {
+ public:
+  using node_reader::node_reader;
 
   grid_spec read(const spec_node& root) {
     if (root.kind != spec_node::type::object) fail(root, "spec", "the spec must be a JSON object");
@@ -219,21 +245,6 @@ class spec_reader {
   }
 
  private:
-  [[noreturn]] void fail(const spec_node& n, const std::string& field, const std::string& message) const {
-    throw parse_error(m_file + ":" + std::to_string(n.line) + ": field " + field + ": " + message);
-  }
-  std::string string(const spec_node& n, const std::string& field) const {
-    if (n.kind != spec_node::type::string) fail(n, field, "must be a string, got " + n.type_name());
-    return n.text;
-  }
-  // A number given as a JSON number or a string: its exact text.
-  std::string number_text(const spec_node& n, const std::string& field) const {
-    if (n.kind != spec_node::type::number && n.kind != spec_node::type::string)
-      fail(n, field, "must be a number (or a string holding one), got " + n.type_name());
-    if (!viscor::detail::looks_like_decimal(n.text))
-      fail(n, field, "must be a finite decimal number, got '" + n.text + "'");
-    return n.text;
-  }
   long long integer(const spec_node& n, const std::string& field, long long lo, long long hi) const {
     const std::string t = n.kind == spec_node::type::number ? n.text : std::string("x");
     if (t.empty() || t.size() > 15 || t.find_first_not_of("0123456789-") != std::string::npos ||
@@ -346,8 +357,6 @@ class spec_reader {
       a.items.push_back(item(n.elements[i], field + "[" + std::to_string(i) + "]"));
     return a;
   }
-
-  std::string m_file;
 };
 
 }  // namespace detail
