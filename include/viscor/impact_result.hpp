@@ -34,6 +34,11 @@ struct impact_result {
   /// bead stops separating), +infinity if it creeps to rest without turning back.
   Real contact_time = 0;
   Real max_compression = 0;          ///< u_max
+  /// For a stick, the overlap where the bead stops separating: u at contact_time,
+  /// where u' returns to 0; when it creeps to rest instead (contact_time =
+  /// +infinity), the static equilibrium u^alpha = g (0 for g = 0). 0 for a
+  /// rebound, and from the adaptive method, which does not compute it (yet).
+  Real stop_overlap = 0;
   Real time_of_max_compression = 0;  ///< tau at u_max
   /// Residual of the energy identity 1 - e^2 = 2 gamma beta int u'^2 u^(beta-1) dtau
   /// (rebound) as computed from the two sides: a built-in consistency check.

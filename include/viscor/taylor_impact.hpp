@@ -12,6 +12,11 @@
 //    v <= v1/2 < 0 down to u = 0: with V = -v, over [0, u1]
 //        V(0) >= V1 - g+ u1 / min V - gamma u1^beta,
 //    so 4 g+ u1 + 2 gamma u1^beta V1 <= V1^2 is enough.
+// 2b. g = 0 and alpha + 1 = 2 beta (linear, Tsuji), underdamped: after maximal
+//    compression, the scale-free spiral_system in ln u (impact_systems.hpp),
+//    so that near critical damping, where the bead creeps back along a slow
+//    spiral and e = exp(-pi xi/sqrt(1 - xi^2)) is tiny, e keeps its relative
+//    digits; phase 3 then runs on the problem rescaled to u = 1.
 // 3. End: the endpoint system backwards to u = 0 exactly (s = 0), or to a
 //    tiny u_eps and the leading terms of the generalized series
 //        v(u) = v0 + g u/v0 - gamma u^beta - u^(alpha+1)/((alpha+1) v0) + O(u^2)
@@ -33,7 +38,10 @@
 //   v = -+kappa (u - u_eq) traps the state when kappa^2 - Gamma kappa + A <= 0,
 //   Gamma the least damping gamma beta u^(beta-1), A the largest stiffness
 //   alpha u^(alpha-1) over the remaining range; the bead creeps to u_eq.
-// Both report contact_time = +infinity.
+// * g > 0, the state equals u_eq up to rounding (at_rest): the turn, if any,
+//   is below the working precision.
+// All three report contact_time = +infinity; stop_overlap is the turning point
+// u_s, or the rest position u_eq (0 for g = 0).
 #pragma once
 
 #include <viscor/contact_law.hpp>
@@ -45,7 +53,9 @@
 #include <viscor/real_types.hpp>
 #include <viscor/taylor_integrator.hpp>
 
+#include <boost/math/constants/constants.hpp>
 #include <boost/math/special_functions/fpclassify.hpp>
+#include <boost/math/tools/precision.hpp>
 
 #include <cmath>
 #include <cstddef>
@@ -62,6 +72,7 @@ template <class Real>
 class taylor_impact_solver {
   using ts = time_system<Real>;
   using es = endpoint_system<Real>;
+  using ss = spiral_system<Real>;
 
  public:
   taylor_impact_solver(const contact_law& law, const Real& gamma, const Real& g, const solve_options<Real>& options)
@@ -80,6 +91,11 @@ class taylor_impact_solver {
     c.two_gamma_beta = 2 * c.gamma_beta;
     c.alpha_equals_beta = law.alpha == law.beta;
     c.beta_is_one = law.beta.is_rational() && law.beta.numerator() == 1 && law.beta.denominator() == 1;
+    c.alpha_is_one = law.alpha.is_rational() && law.alpha.numerator() == 1 && law.alpha.denominator() == 1;
+    if (c.alpha > 1) {
+      using std::pow;
+      m_u_growth = pow(Real(4), 1 / (c.alpha - 1));
+    }
     // NOTE: u = s^Q needs polynomials of degree Q(alpha+1) - 1; for huge
     // denominators the exponential variable is cheaper and just as exact.
     if (law.alpha.is_rational() && law.beta.is_rational()) {
@@ -92,6 +108,11 @@ class taylor_impact_solver {
           c.Q = q, c.Q_alpha = qa, c.Q_beta = qb;
         }
       }
+      // alpha + 1 = 2 beta, g = 0, underdamped: the spiral variables (impact_systems.hpp).
+      const long p1 = law.alpha.numerator(), q1 = law.alpha.denominator();
+      const long p2 = law.beta.numerator(), q2 = law.beta.denominator();
+      m_spiral = g == 0 && gamma > 0 && (p1 + q1) * q2 == 2 * p2 * q1 &&
+                 c.gamma_beta * c.gamma_beta < 4 * c.beta;
     }
   }
 
@@ -105,6 +126,11 @@ class taylor_impact_solver {
 
     if (!start_phase(end_sys, end_int)) return finish();
     if (!time_phase(time_int)) return finish();
+    if (m_in_spiral) {
+      ss spiral_sys(m_c, taylor_order(m_tol));
+      taylor_integrator<Real, ss> spiral_int(spiral_sys, m_tol);
+      spiral_phase(spiral_int);
+    }
     end_phase(end_int);
     return finish();
   }
@@ -165,6 +191,7 @@ class taylor_impact_solver {
   // ---- phase 2: tau around maximal compression; false when the bead sticks ----
   bool time_phase(taylor_integrator<Real, ts>& integ) {
     using std::abs;
+    using std::sqrt;
     std::vector<Real> y{m_u, m_v, m_D}, y1(3);
     bool compressing = true;
     for (;;) {
@@ -173,9 +200,21 @@ class taylor_impact_solver {
       Real h_cap = 1 / epsilon<Real>();
       if (!compressing && y[ts::v] < 0) h_cap = y[ts::u] / (2 * abs(y[ts::v]));
       Real h = integ.expand(m_tau, y, h_cap);
+      // Events are found from the signs of v at the ends of a step, so a step
+      // must not span two zeros of v. NOTE: for entire solutions (linear law)
+      // the Jorba-Zou step grows like p/e^3 with the order p (12 time units at
+      // 210 digits, two periods: the bead "stuck"); one radian of the fastest
+      // oscillation, omega^2 = alpha u^(alpha-1), keeps a zero of v about
+      // pi/omega from the next (Sturm comparison). omega grows with u: at the
+      // end of the step 2 radians are allowed (cheap test: u grew less than
+      // m_u_growth, i.e. omega at most 2-fold).
+      const Real& omega2 = integ.system().stiffness();
+      if (h * h * omega2 > 1) h = 1 / sqrt(omega2);
       for (int tries = 0;; ++tries) {
         integ.values(y1, h);
-        if (isfinite_(y1[ts::u]) && isfinite_(y1[ts::v]) && y1[ts::u] > y[ts::u] / 4) break;
+        if (isfinite_(y1[ts::u]) && isfinite_(y1[ts::v]) && y1[ts::u] > y[ts::u] / 4 &&
+            (!(y1[ts::u] > m_u_growth * y[ts::u]) || h * h * stiffness_at(y1[ts::u]) <= 4))
+          break;
         h /= 2;
         check_tries(tries, "maximal compression phase");
       }
@@ -208,7 +247,7 @@ class taylor_impact_solver {
       note_speed(y[ts::v]);
       set_state(y);
       if (compressing) {
-        if (creeps_to_equilibrium_from_below()) {
+        if (creeps_to_equilibrium_from_below() || at_rest()) {
           m_result.time_of_max_compression = std::numeric_limits<Real>::infinity();
           m_result.max_compression = m_u_eq;
           stick(std::numeric_limits<Real>::infinity());
@@ -220,13 +259,101 @@ class taylor_impact_solver {
           stick(std::numeric_limits<Real>::infinity());
           return false;
         }
+        if (at_rest()) {
+          // NOTE: the energy check of a turn applies: E = P(u_eq) < 0.
+          stick(std::numeric_limits<Real>::infinity(), true);
+          m_result.stop_overlap = m_u_eq;
+          return false;
+        }
+        if (enters_spiral()) return true;
       }
     }
+  }
+
+  // ---- phase 2b (spiral_system): g = 0, alpha + 1 = 2 beta, underdamped ----
+  // Entered after maximal compression once r = v/u^c <= -1/(2 sqrt c), left
+  // for phase 3 when the exit test of phase 2 holds (for g = 0 and beta = c it
+  // reads r <= -2 gamma, with u <= u_max/2). r falls monotonically.
+  bool enters_spiral() {
+    using std::pow;
+    using std::sqrt;
+    if (!m_spiral || !(m_v < 0)) return false;
+    const Real r = m_v / pow(m_u, m_c.beta);
+    if (!(4 * m_c.beta * r * r >= 1)) return false;
+    m_in_spiral = true;
+    return true;
+  }
+
+  void spiral_phase(taylor_integrator<Real, ss>& integ) {
+    using std::abs;
+    using std::exp;
+    using std::log;
+    using std::pow;
+    const auto& c = m_c;
+    std::vector<Real> x{Real(m_v / pow(m_u, c.beta)), Real(m_tau * pow(m_u, c.beta - 1)), m_D}, x1(3);
+    Real sigma = log(m_u);
+    const Real sigma_exit = log(Real(m_result.max_compression * m_switch_overlap));
+    const Real r_exit = -2 * c.gamma;
+    // Relative error of e = |r| u^c at the exit: an error dr in r at r shifts
+    // the exit sigma by c r^2/den(r) dr/r, den = 1 + gamma beta r + c r^2
+    // (the sensitivity of int r dr/den); large on the slow spiral near critical
+    // damping. Errors before the spiral enter relative to the motion's size.
+    m_spiral_error = m_tol * static_cast<long>(m_steps) * (1 + sensitivity(x[ss::r]));
+    const Real cap = -1 / epsilon<Real>();
+    while (!(x[ss::r] <= r_exit && sigma <= sigma_exit)) {
+      Real h = integ.expand(sigma, x, cap);
+      for (int tries = 0;; ++tries) {
+        integ.values(x1, h);
+        // NOTE: r falls (up to rounding: near critical damping its drift per unit
+        // sigma can be below eps) and at most fourfold per step.
+        if (isfinite_(x1[ss::r]) && x1[ss::r] <= x[ss::r] - 8 * epsilon<Real>() * x[ss::r] &&
+            x1[ss::r] >= 4 * x[ss::r])
+          break;
+        h /= 2;
+        check_tries(tries, "creeping (spiral) phase");
+      }
+      count_step();
+      sigma += h;
+      x.swap(x1);
+      m_spiral_error += m_tol * (1 + sensitivity(x[ss::r])) + c.beta * epsilon<Real>() * abs(sigma);
+    }
+    // Rounding in the slow drift 1 + gamma beta r + c r^2 acts like a relative
+    // error eps in 1 - xi^2, xi = gamma beta/(2 sqrt c) the damping ratio, and
+    // ln e = -pi xi/sqrt(1 - xi^2) (the linear oscillator's; Tsuji maps onto it)
+    // answers with pi xi eps/(1 - xi^2)^(3/2).
+    {
+      using std::sqrt;
+      const Real xi = c.gamma_beta / (2 * sqrt(c.beta));
+      const Real gap = (1 - xi) * (1 + xi);
+      // NOTE: 2 pi, not pi: the drift's three terms (~1 each) and gamma beta
+      // are each rounded, an absolute error of up to ~3 eps, not 1.
+      m_spiral_error += 2 * boost::math::constants::pi<Real>() * xi * epsilon<Real>() / (gap * sqrt(gap));
+    }
+    // Phase 3 runs on the problem scaled to u = 1 (u -> u/lambda, v -> v/lambda^c,
+    // tau -> tau lambda^(c-1), D -> D/lambda^(2c), lambda = exp(sigma)), which
+    // the equation does not see; end_phase scales back. NOTE: unscaled, the
+    // series in s about s ~ u = 1e-44 have coefficients ~ 1e44^k, which overflow
+    // a double at order 7; and exp(sigma) itself underflows a double after ~745
+    // e-folds (gamma = 2 - 1e-8: e ~ 1e-13644 rounds to 0, as it should).
+    m_lambda_log = sigma;
+    m_tau_before = x[ss::theta] * exp((1 - c.beta) * sigma);
+    m_D_before = x[ss::D];
+    m_u = 1;
+    m_v = x[ss::r];
+    m_tau = 0;
+    m_D = 0;
+  }
+
+  Real sensitivity(const Real& r) const {
+    using std::abs;
+    const Real den = 1 + m_c.gamma_beta * r + m_c.beta * r * r;
+    return m_c.beta * r * r / abs(den);
   }
 
   // ---- phase 3: back to u = 0 in sigma ----
   void end_phase(taylor_integrator<Real, es>& integ) {
     using std::abs;
+    using std::exp;
     using std::log;
     using std::pow;
     const auto& c = m_c;
@@ -258,9 +385,10 @@ class taylor_impact_solver {
         check_tries(tries, "restitution phase");
       }
       count_step();
+      if (m_in_spiral) m_spiral_error += m_tol;
       sigma = h == distance ? target : Real(sigma + h);
       x.swap(x1);
-      note_speed(x[es::v]);
+      if (!m_in_spiral) note_speed(x[es::v]);
     }
     m_v = x[es::v], m_tau = x[es::tau], m_D = x[es::D];
     if (!c.use_root_variable) {
@@ -272,6 +400,12 @@ class taylor_impact_solver {
       m_D += c.two_gamma * V * u_beta;
     }
     m_u = 0;
+    if (m_in_spiral) {
+      m_v *= exp(c.beta * m_lambda_log);
+      m_tau = m_tau_before + m_tau * exp((1 - c.beta) * m_lambda_log);
+      m_D = m_D_before + m_D * exp(2 * c.beta * m_lambda_log);
+      note_speed(m_v);
+    }
     // Two values of e: e_v = -v(T_f) from the trajectory and e_D = sqrt(1 - D)
     // from the energy identity. Their errors: e^2 from the trajectory is wrong by
     // about the energy residual plus the local errors (tol per step relative to
@@ -285,15 +419,24 @@ class taylor_impact_solver {
     m_result.energy_residual = (1 - e_v) * (1 + e_v) - m_D;
     const Real steps = Real(m_steps);
     const Real d_v = abs(m_result.energy_residual) + steps * m_tol * m_speed_scale * m_speed_scale;
-    const Real err_v = d_v / (e_v + sqrt(d_v));
+    Real err_v = d_v / (e_v + sqrt(d_v));
+    if (m_in_spiral) {
+      // relative digits of a tiny e (see spiral_phase)
+      Real err_s = e_v * m_spiral_error;
+      // underflowed to a subnormal or 0: relative digits are lost, absolute ones are not
+      if (e_v < boost::math::tools::min_value<Real>()) err_s += boost::math::tools::min_value<Real>();
+      if (err_s < err_v) err_v = err_s;
+    }
     const Real one_minus_D = 1 - m_D;
     Real err_D = std::numeric_limits<Real>::infinity(), e_D = 0;
+    const Real d_D = steps * m_tol * m_D + epsilon<Real>();
     if (one_minus_D > 0) {
       e_D = sqrt(one_minus_D);
-      const Real d_D = steps * m_tol * m_D + epsilon<Real>();
       err_D = d_D / (e_D + sqrt(d_D));
     }
-    if (err_D <= err_v) {
+    // NOTE: e_D is used only where it resolves e (1 - D above its error): near
+    // e = 0 it is the square root of rounding noise, while e_v may still be right.
+    if (err_D <= err_v && one_minus_D > d_D) {
       // 1 - e = D / (1 + e): full relative precision as gamma -> 0.
       m_result.one_minus_e = m_D / (1 + e_D);
       m_result.e = e_D > Real(1) / 2 ? Real(1 - m_result.one_minus_e) : e_D;
@@ -313,6 +456,8 @@ class taylor_impact_solver {
     m_result.e = 0;
     m_result.one_minus_e = 1;
     m_result.contact_time = time;
+    // Where the bead stops separating: the turning point, or (creeping) the static equilibrium.
+    m_result.stop_overlap = turned ? m_u : Real(m_c.g > 0 ? equilibrium() : Real(0));
     const Real two_E =
         m_v * m_v + 2 * pow(m_u, m_c.alpha_plus_one) / m_c.alpha_plus_one - 2 * m_c.g * m_u;
     m_result.energy_residual = 1 - two_E - m_D;
@@ -357,6 +502,23 @@ class taylor_impact_solver {
     return pow(m_u, k) <= ratio * (1 - ratio) * c.gamma * c.gamma * c.beta;
   }
 
+  // g > 0: the state is the equilibrium u_eq up to rounding. NOTE: near
+  // critical damping a turn (v = 0) can come when the motion about u_eq is far
+  // below the rounding of u (linear law, gamma = 1.999, g = 1e-3 in double:
+  // |u - u_eq| ~ 1e-44 at the turn back); v then only decays or jitters at
+  // rounding level, and no event would ever be seen.
+  bool at_rest() {
+    using std::abs;
+    using std::pow;
+    using std::sqrt;
+    if (!(m_c.g > 0)) return false;
+    const Real u_eq = equilibrium();
+    const Real du = 64 * epsilon<Real>() * u_eq;
+    if (!(abs(m_u - u_eq) <= du)) return false;
+    // |v| against the speed of an oscillation of amplitude du: omega du, omega^2 = alpha u_eq^(alpha-1)
+    return abs(m_v) <= du * sqrt(m_c.alpha * pow(u_eq, m_c.alpha - 1));
+  }
+
   // g > 0, u > u_eq, v < 0: trapped in the sector -kappa (u - u_eq) <= v < 0.
   bool creeps_to_equilibrium_from_above() {
     using std::pow;
@@ -395,6 +557,13 @@ class taylor_impact_solver {
       m_have_u_eq = true;
     }
     return m_u_eq;
+  }
+
+  // omega^2 = alpha u^(alpha-1), the stiffness at overlap u.
+  Real stiffness_at(const Real& u) const {
+    using std::pow;
+    if (m_c.alpha_is_one) return Real(1);
+    return m_c.alpha * pow(u, m_c.alpha - 1);
   }
 
   // u where the first-order terms of the generalized series at speed V are all
@@ -477,6 +646,10 @@ class taylor_impact_solver {
   Real m_u_eq = 0;
   bool m_have_u_eq = false;
   Real m_speed_scale = 1;
+  Real m_spiral_error = 0;
+  Real m_lambda_log = 0, m_tau_before = 0, m_D_before = 0;  // spiral exit (scaling of phase 3)
+  bool m_spiral = false, m_in_spiral = false;
+  Real m_u_growth = std::numeric_limits<Real>::infinity();  // 4^(1/(alpha-1)): omega^2 grows at most 4-fold
   // Phase switches: leave phase 1 when v < m_switch_speed * peak v; enter phase 3
   // only once u < m_switch_overlap * u_max (away from the turning point, which
   // limits the sigma steps, as u = 0 limits the tau steps).

@@ -107,6 +107,7 @@ struct cor_command {
       j["outcome"] = std::string(to_string(r.outcome));
       j["contact_time"] = number(r.contact_time);
       j["max_compression"] = number(r.max_compression);
+      if (r.outcome == impact_outcome::stick) j["stop_overlap"] = number(r.stop_overlap);
       j["time_of_max_compression"] = number(r.time_of_max_compression);
       j["energy_residual"] = number(r.energy_residual);
       j["error_estimate"] = number(r.error_estimate);
@@ -121,6 +122,7 @@ struct cor_command {
            << (r.outcome == impact_outcome::rebound ? "T_f        " : "T_stop     ") << number(r.contact_time)
            << "\n"
            << "u_max      " << number(r.max_compression) << " at tau = " << number(r.time_of_max_compression) << "\n"
+           << (r.outcome == impact_outcome::stick ? "u_stop     " + number(r.stop_overlap) + " (where u' returns to 0, or the rest position)\n" : std::string())
            << "error      " << to_decimal_string(r.error_estimate, 3) << " (estimated, absolute, on e)\n"
            << "energy     " << to_decimal_string(r.energy_residual, 3) << " (residual of identity (6))\n"
            << "steps      " << r.steps << " (" << to_string(r.method) << ")\n"

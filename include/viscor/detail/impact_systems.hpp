@@ -19,6 +19,22 @@
 //     entire; u = 0 moves to sigma = -infinity and the last gap [0, u_eps] is
 //     closed by the leading terms of the generalized (Puiseux) series of the
 //     solution (see taylor_impact.hpp).
+//
+// spiral_system (g = 0 and alpha + 1 = 2 beta: linear, Tsuji): the equation is
+//   invariant under u -> lambda u, tau -> lambda^(-(alpha-1)/2) tau, so with
+//   sigma = ln u, the scale-free speed r = v / u^c, c = beta = (alpha+1)/2, and
+//   the scale-free time theta = tau u^(c-1),
+//     dr/dsigma     = -(1 + gamma beta r + c r^2) / r,
+//     dtheta/dsigma = (c - 1) theta + 1/r,
+//     dD/dsigma     = 2 gamma beta r exp(2 beta sigma).
+//   NOTE: tau itself grows like exp(-(c-1) sigma) (Tsuji: c - 1 = 1/4), an entire
+//   series whose Jorba-Zou step stays ~ 4p/e^3 in sigma however slowly r moves;
+//   theta relaxes to the slowly varying -1/((c-1) r) instead.
+//   Near critical damping (gamma beta)^2 -> 4c the bead creeps back along a slow
+//   spiral, ln u falling by ~ pi/omega, omega^2 = 1/c - (gamma beta/(2c))^2,
+//   before it leaves (e = exp(-pi/omega)-small: 1e-13644 at gamma = 2 - 1e-8 for
+//   the linear law); in tau that is ~ pi/omega time units of steps, in sigma a
+//   handful, as r(sigma) varies on the scale 1/omega.
 #pragma once
 
 #include <viscor/detail/taylor_series.hpp>
@@ -38,21 +54,12 @@ struct impact_constants {
   Real alpha_plus_one, beta_plus_one;
   Real gamma_beta, two_gamma, two_gamma_beta;
   bool alpha_equals_beta = false;
+  bool alpha_is_one = false;
   bool beta_is_one = false;
   // u = s^Q variable (rational exponents): integer exponents of the monomials.
   bool use_root_variable = false;
   long Q = 1, Q_alpha = 1, Q_beta = 1;
 };
-
-/// Step-control scale: |x0| for a quadrature kept to relative precision,
-/// max(1, |x0|) for a dynamic state.
-template <class Real>
-Real scale_of(bool relative, const Real& x0) {
-  using std::abs;
-  Real s = abs(x0);
-  if (!relative && s < 1) s = 1;
-  return s;
-}
 
 template <class Real>
 class time_system {
@@ -63,9 +70,16 @@ class time_system {
       : m_c(c), m_A(order + 2), m_P(order + 2), m_dP(order + 2), m_ju(order + 2) {}
 
   std::size_t size() const { return 3; }
-  // NOTE: D is controlled relative to itself: for the linear law u, v are entire
-  // and only the truncation of v^2 (twice the frequency) limits the step.
-  Real step_scale(std::size_t i, const Real& x0) const { return scale_of(i == D, x0); }
+  // Step-control scales, set by jet(): D relative to itself (for the linear law
+  // u, v are entire and only the truncation of v^2 limits the step); u and v
+  // at least 1 (absolute error) for an O(1) motion, and relative to the size
+  // of a small one (S < 1/4), S^2 = v^2 + 2 u^(alpha+1)/(alpha+1) (speed) and
+  // S^(2/(alpha+1)) (overlap), so that a bead creeping towards rest keeps its
+  // relative digits.
+  const Real& step_scale(std::size_t i, const Real& /*x0*/) const { return m_scale[i]; }
+  /// omega^2 = alpha u^(alpha-1) at the expansion point, set by jet(): the
+  /// square of the fastest local frequency of the motion.
+  const Real& stiffness() const { return m_omega2; }
 
   void jet(const Real& /*tau0*/, taylor_jet<Real>& x) {
     using std::pow;
@@ -109,12 +123,46 @@ class time_system {
       E[k + 1] *= m_c.two_gamma;
       E[k + 1] /= static_cast<long>(k + 1);
     }
+    set_scales(U[0], V[0], A[0], E[0]);
+    if (m_c.alpha_is_one) {
+      m_omega2 = 1;
+    } else {
+      m_omega2 = A[0];
+      m_omega2 *= m_c.alpha;
+      m_omega2 /= U[0];
+    }
   }
 
  private:
+  void set_scales(const Real& u0, const Real& v0, const Real& u_alpha, const Real& D0) {
+    using std::abs;
+    using std::pow;
+    using std::sqrt;
+    // m_t = S^2
+    m_t = u0 * u_alpha;
+    m_t *= 2;
+    m_t /= m_c.alpha_plus_one;
+    m_t += v0 * v0;
+    m_scale[u] = abs(u0);
+    m_scale[v] = abs(v0);
+    // NOTE: only for a small motion (S < 1/4): the scale enters the step as
+    // scale^(1/p), so near S ~ 1 this would change nothing but cost a pow.
+    if (m_t < Real(1) / 16) {
+      m_scratch = m_c.alpha_is_one ? Real(sqrt(m_t)) : Real(pow(m_t, 1 / m_c.alpha_plus_one));
+      if (m_scale[u] < m_scratch) m_scale[u] = m_scratch;
+      m_scratch = sqrt(m_t);
+      if (m_scale[v] < m_scratch) m_scale[v] = m_scratch;
+    } else {
+      if (m_scale[u] < 1) m_scale[u] = 1;
+      if (m_scale[v] < 1) m_scale[v] = 1;
+    }
+    m_scale[D] = abs(D0);
+  }
+
   const impact_constants<Real>& m_c;
   std::vector<Real> m_A, m_P, m_dP, m_ju;
-  Real m_scratch, m_t;
+  Real m_scratch, m_t, m_omega2;
+  Real m_scale[3];
 };
 
 template <class Real>
@@ -131,7 +179,13 @@ class endpoint_system {
   }
 
   std::size_t size() const { return 3; }
-  Real step_scale(std::size_t i, const Real& x0) const { return scale_of(i != v, x0); }
+  // NOTE: every state relative to itself, v too: the endpoint phases keep |v|
+  // away from 0 (v > 4/5 of its peak, or |v| > |v1|/2 on the way out), and e
+  // may be tiny (near critical damping) yet wanted to relative precision.
+  Real step_scale(std::size_t, const Real& x0) const {
+    using std::abs;
+    return abs(x0);
+  }
 
   void jet(const Real& sigma0, taylor_jet<Real>& x) {
     const std::size_t p = x.order();
@@ -212,6 +266,63 @@ class endpoint_system {
   std::vector<Real> m_J, m_M, m_L, m_r, m_tmp, m_powers;
   std::size_t m_deg_J = 0, m_deg_M = 0, m_deg_L = 0;
   Real m_lambda_alpha, m_lambda_beta, m_t;
+};
+
+template <class Real>
+class spiral_system {
+ public:
+  enum : std::size_t { r = 0, theta = 1, D = 2 };
+
+  spiral_system(const impact_constants<Real>& c, std::size_t order)
+      : m_c(c), m_R(order + 2), m_Y(order + 2) {
+    m_time_rate = m_c.beta - 1;  // c - 1
+    m_dissipation_rate = 2 * m_c.beta;
+  }
+
+  std::size_t size() const { return 3; }
+  // Every state relative to itself: r < 0 is bounded away from 0 and falls
+  // monotonically; e = |r| u^c wants relative digits.
+  Real step_scale(std::size_t, const Real& x0) const {
+    using std::abs;
+    return abs(x0);
+  }
+
+  void jet(const Real& sigma0, taylor_jet<Real>& x) {
+    const std::size_t p = x.order();
+    Real* S = x[r];
+    Real* T = x[theta];
+    Real* E = x[D];
+    Real* R = m_R.data();
+    exponential_of_linear(m_Y, m_dissipation_rate, sigma0, p);
+    R[0] = 1;
+    R[0] /= S[0];
+    for (std::size_t k = 0; k < p; ++k) {
+      if (k > 0) reciprocal(R[k], S, R, k);
+      // r' = -1/r - gamma beta - c r
+      m_t = S[k];
+      m_t *= m_c.beta;
+      S[k + 1] = R[k];
+      S[k + 1] += m_t;
+      if (k == 0) S[k + 1] += m_c.gamma_beta;
+      S[k + 1] = -S[k + 1];
+      S[k + 1] /= static_cast<long>(k + 1);
+      T[k + 1] = R[k];
+      if (!m_c.alpha_is_one) {
+        m_t = T[k];
+        m_t *= m_time_rate;
+        T[k + 1] += m_t;
+      }
+      T[k + 1] /= static_cast<long>(k + 1);
+      product(E[k + 1], S, m_Y.data(), k);
+      E[k + 1] *= m_c.two_gamma_beta;
+      E[k + 1] /= static_cast<long>(k + 1);
+    }
+  }
+
+ private:
+  const impact_constants<Real>& m_c;
+  std::vector<Real> m_R, m_Y;
+  Real m_time_rate, m_dissipation_rate, m_t;
 };
 
 }  // namespace viscor::detail

@@ -1,0 +1,89 @@
+// viscor cor (src/cli/cmd_cor.cpp): e as printed against the exact linear
+// solution, at double and at 210 digits (issue 3: "stick" there), and errors
+// for bad input. Skipped when the CLI is not built.
+#include <viscor/exact_solutions.hpp>
+
+#include "test_utils.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <sstream>
+#include <string>
+
+namespace {
+
+using viscor::test::run_cli;
+using viscor::mpfr_real;
+
+bool cli_built() { return std::string(VISCOR_CLI_PATH).size() > 0; }
+
+/// The value on the readable summary's line "NAME   value".
+std::string summary_field(const std::string& out, const std::string& name) {
+  std::istringstream in(out);
+  std::string line;
+  while (std::getline(in, line))
+    if (line.rfind(name + " ", 0) == 0) {
+      std::istringstream fields(line.substr(name.size()));
+      std::string value;
+      fields >> value;
+      return value;
+    }
+  ADD_FAILURE() << "no line '" << name << "' in\n" << out;
+  return "nan";
+}
+
+TEST(CliCor, LinearLawMatchesExactSolution) {
+  if (!cli_built()) GTEST_SKIP() << "viscor CLI not built";
+  for (const char* g : {"0", "1", "-0.5"}) {
+    SCOPED_TRACE(g);
+    const auto r = run_cli(std::string("cor --model linear --gamma 0.05 --g ") + g);
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("rebound"), std::string::npos) << r.out;
+    const double e = viscor::parse_real<double>(summary_field(r.out, "e"), "e");
+    const auto exact = viscor::exact_cor<double>(viscor::law_by_name("linear"), 0.05, std::stod(g));
+    EXPECT_NEAR(e, exact->e, 1e-14);
+  }
+}
+
+// Issue 3, defect 1, through the CLI: 210 digits printed, all but the last few right.
+TEST(CliCor, LinearLawAt210Digits) {
+  if (!cli_built()) GTEST_SKIP() << "viscor CLI not built";
+  const auto r = run_cli("cor --model linear --gamma 0.05 --g 1 --digits 210 --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["outcome"], "rebound");
+  EXPECT_EQ(j["precision"]["digits"], 210);
+  viscor::scoped_precision digits(230);
+  const mpfr_real e = viscor::parse_real<mpfr_real>(j["e"].get<std::string>(), "e");
+  const auto exact = viscor::exact_cor<mpfr_real>(viscor::law_by_name("linear"), mpfr_real("0.05"), mpfr_real(1));
+  EXPECT_GE(viscor::test::agreeing_digits(e, exact->e), 205.0) << j["e"];
+}
+
+TEST(CliCor, BadInputNamesTheValue) {
+  if (!cli_built()) GTEST_SKIP() << "viscor CLI not built";
+  auto r = run_cli("cor --model linear --gamma -1");
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.err.find("gamma"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("-1"), std::string::npos) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
+  r = run_cli("cor --alpha 0.5 --beta 1 --gamma 0.1");
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.err.find("alpha"), std::string::npos) << r.err;
+  EXPECT_TRUE(r.err.find("0.5") != std::string::npos || r.err.find("1/2") != std::string::npos) << r.err;
+  r = run_cli("cor --model linear --gamma 0.1 --g nonsense");
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.err.find("nonsense"), std::string::npos) << r.err;
+}
+
+// Issue 7 through the CLI: a stuck bead's stop overlap (overdamped: creeps to u = g).
+TEST(CliCor, StuckBeadReportsWhereItStops) {
+  if (!cli_built()) GTEST_SKIP() << "viscor CLI not built";
+  const auto r = run_cli("cor --model linear --gamma 3 --g 0.5 --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["outcome"], "stick");
+  EXPECT_EQ(viscor::parse_real<double>(j["stop_overlap"].get<std::string>(), "stop_overlap"), 0.5);
+}
+
+}  // namespace
