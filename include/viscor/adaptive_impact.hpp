@@ -43,6 +43,7 @@
 
 #include <boost/math/special_functions/fpclassify.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <limits>
@@ -104,6 +105,18 @@ struct regularised_law {
   std::int64_t Q = 1, Qa = 1, Qb = 1;  // Q, Q alpha, Q beta (rational case)
   W alpha, beta, gamma, g, gamma_beta, inv_alpha_plus_one;
 
+  // NOTE: cost. eval runs once per right-hand side, i.e. hundreds of times per GBS
+  // step. The powers the right-hand sides read, v^(Q-1), v^Q, v^(Q alpha),
+  // v^(Q beta - Q), v^(Q beta) and v^(Q beta - 1), share one table v^0..v^M: v^k is
+  // (v^(k/2))^2 for even k and v^(k-1) v for odd k, computed only when needed
+  // (Kuwabara-Kono: 2 operations, Tsuji: 5, instead of 7 and 13 by separate binary
+  // powering). Exponents above max_table fall back to binary powering per power.
+  static constexpr std::int64_t max_table = 24;
+  enum slot { s_vq1, s_u, s_ua, s_ub1, s_ub, s_diss, s_count };
+  std::array<std::int64_t, s_count> exponent_of{};  // rational case: the power of v in each slot
+  std::vector<unsigned char> needed;                 // needed[k]: v^k is computed (table case)
+  bool table = false;
+
   regularised_law(const contact_law& law, const W& gamma_, const W& g_) : gamma(gamma_), g(g_) {
     if (law.alpha.is_rational() && law.beta.is_rational()) {
       const std::int64_t q1 = law.alpha.denominator(), q2 = law.beta.denominator();
@@ -119,40 +132,92 @@ struct regularised_law {
     beta = law.beta.template value<W>();
     gamma_beta = gamma * beta;
     inv_alpha_plus_one = 1 / (alpha + 1);
+    if (rational) {
+      // alpha, beta >= 1 (contact_law::validate): every exponent is >= 0.
+      exponent_of = {Q - 1, Q, Qa, Qb - Q, Qb, Qb - 1};
+      const std::int64_t top = *std::max_element(exponent_of.begin(), exponent_of.end());
+      table = top <= max_table;
+      if (table) {
+        needed.assign(static_cast<std::size_t>(top) + 1, 0);
+        for (std::int64_t e : exponent_of) needed[static_cast<std::size_t>(e)] = 1;
+        for (std::int64_t k = top; k > 1; --k)
+          if (needed[static_cast<std::size_t>(k)]) needed[static_cast<std::size_t>(k % 2 == 0 ? k / 2 : k - 1)] = 1;
+      }
+    }
   }
 
-  /// v^(Q-1), u = v^Q, u^alpha, u^beta and u^(beta-1) for v >= 0.
+  /// v^(Q-1), u = v^Q, u^alpha, u^beta, u^(beta-1) and v^(Q beta - 1) for v >= 0,
+  /// read through the accessors after regularised_law::eval.
   struct powers {
-    W vq1, u, ua, ub, ub1, scratch;
+    const W& vq1() const { return *slots[s_vq1]; }
+    const W& u() const { return *slots[s_u]; }
+    const W& ua() const { return *slots[s_ua]; }
+    const W& ub() const { return *slots[s_ub]; }
+    const W& ub1() const { return *slots[s_ub1]; }
+    const W& diss() const { return *slots[s_diss]; }
+
+    powers() = default;
+    powers(const powers&) = delete;  // slots point into the own table
+    powers& operator=(const powers&) = delete;
+
+    std::vector<W> v;  // v[k] = v^k (table case) or the slots' own values
+    std::array<const W*, s_count> slots{};
+    W scratch;
   };
-  void eval(const W& v, powers& p) const {
+
+  void eval(const W& x, powers& p) const {
     using std::pow;
+    if (rational && table) {
+      if (p.v.size() != needed.size()) {
+        p.v.assign(needed.size(), W(0));
+        p.v[0] = 1;
+      }
+      if (needed.size() > 1) p.v[1] = x;
+      for (std::size_t k = 2; k < needed.size(); ++k) {
+        if (!needed[k]) continue;
+        if (k % 2 == 0)
+          p.v[k] = p.v[k / 2] * p.v[k / 2];
+        else
+          p.v[k] = p.v[k - 1] * x;
+      }
+      for (int i = 0; i < s_count; ++i) p.slots[i] = &p.v[static_cast<std::size_t>(exponent_of[i])];
+      return;
+    }
+    if (p.v.size() != s_count) p.v.assign(s_count, W(0));
+    for (int i = 0; i < s_count; ++i) p.slots[i] = &p.v[i];
     if (rational) {
-      integer_power(v, Q - 1, p.vq1, p.scratch);
-      p.u = p.vq1 * v;
-      integer_power(v, Qa, p.ua, p.scratch);
-      integer_power(v, Qb - Q, p.ub1, p.scratch);
-      p.ub = p.ub1 * p.u;
+      for (int i = 0; i < s_count; ++i) integer_power(x, exponent_of[i], p.v[i], p.scratch);
     } else {
-      p.vq1 = 1;
-      p.u = v;
-      p.ua = pow(v, alpha);
-      p.ub1 = pow(v, beta - 1);
-      p.ub = p.ub1 * v;
+      p.v[s_vq1] = 1;
+      p.v[s_u] = x;
+      p.v[s_ua] = pow(x, alpha);
+      p.v[s_ub1] = pow(x, beta - 1);
+      p.v[s_ub] = p.v[s_ub1] * x;
+      p.v[s_diss] = p.v[s_ub1];  // Q = 1: s^(Q beta - 1) = u^(beta-1)
+    }
+  }
+  /// x *= Q in place (an exponent shift when Q is a power of two, as for every named law).
+  void times_Q(W& x) const {
+    using std::ldexp;
+    if (Q == 1) return;
+    if ((Q & (Q - 1)) == 0) {
+      int shift = 0;
+      while ((std::int64_t{1} << shift) < Q) ++shift;
+      x = ldexp(x, shift);
+    } else {
+      x *= Q;
     }
   }
   /// s^(Q beta - 1) (the s-mode dissipation integrand's power).
-  W s_power_for_dissipation(const W& s, const powers& p) const {
-    using std::pow;
-    if (rational) return p.ub1 * p.vq1;
-    return pow(s, beta - 1);
-  }
+  const W& s_power_for_dissipation(const powers& p) const { return p.diss(); }
   /// Energy u'^2/2 + u^(alpha+1)/(alpha+1) - g u.
-  W energy(const W& du, const powers& p) const { return du * du / 2 + p.ua * p.u * inv_alpha_plus_one - g * p.u; }
+  W energy(const W& du, const powers& p) const {
+    return du * du / 2 + p.ua() * p.u() * inv_alpha_plus_one - g * p.u();
+  }
   /// u |u''| with u'' = g - u^alpha - gamma beta u^(beta-1) u'.
   W u_times_abs_acceleration(const W& du, const powers& p) const {
     using std::abs;
-    return abs(p.u * (g - p.ua) - gamma_beta * p.ub * du);
+    return abs(p.u() * (g - p.ua()) - gamma_beta * p.ub() * du);
   }
 };
 
@@ -173,6 +238,9 @@ class adaptive_impact_solver {
         m_t_int(rtol, impact_state<W>{W(0), rtol, W(0)}, max_columns),
         m_where(std::move(where)) {
     m_s_int.set_keep_nodes(false);  // s steps cannot cross u' = 0: no events to detect
+    m_t_int.set_autonomous(true);   // t_rhs does not read tau
+    m_s_int.set_read_components(2);  // s_rhs and t_rhs never read Dt
+    m_t_int.set_read_components(2);
   }
 
   struct raw_result {
@@ -241,7 +309,7 @@ class adaptive_impact_solver {
             r.time_of_max = locate_turning_point(tau0, z0, m, at);
             typename regularised_law<W>::powers p;
             m_law.eval(at[0], p);
-            r.max_compression = p.u;
+            r.max_compression = p.u();
             compressed = true;
           } else if (compressed && du_prev < 0 && du_next >= 0) {
             impact_state<W> at;
@@ -253,7 +321,7 @@ class adaptive_impact_solver {
         }
         typename regularised_law<W>::powers p;
         m_law.eval(z[0], p);
-        const W du = z[1] - m_law.gamma * p.ub;
+        const W du = z[1] - m_law.gamma * p.ub();
         if (!compressed) {
           if (m_law.g > 0 && creeps_to_equilibrium(z[0], du)) {
             r.outcome = impact_outcome::stick, r.creep = true;
@@ -348,8 +416,8 @@ class adaptive_impact_solver {
     typename regularised_law<W>::powers p;
     s = m_law.Q == 1 ? series_limit(W(1)) : W(pow(series_limit(W(1)), W(1) / W(m_law.Q)));
     m_law.eval(s, p);
-    const W u = p.u;
-    const W ua1 = p.ua * u, ub = p.ub;
+    const W u = p.u();
+    const W ua1 = p.ua() * u, ub = p.ub();
     y[0] = u - m_law.g * u * u / 2 + m_law.gamma * ub * u / (b + 1) + ua1 * u / ((a + 1) * (a + 2));
     y[1] = 1 + m_law.g * u - ua1 / (a + 1);
     y[2] = ub / b + m_law.g * ub * u / (b + 1) - m_law.gamma * ub * ub / (2 * b) - ua1 * ub / ((a + 1) * (a + b + 1));
@@ -377,13 +445,19 @@ class adaptive_impact_solver {
   // s-mode right-hand side; direction +1 on the way in (u' > 0), -1 on the way out.
   bool s_rhs(const W& s, const impact_state<W>& y, impact_state<W>& d, int direction) {
     if (s < 0) return false;
+    // NOTE: written as in-place single operations (no fused multiply-adds, no
+    // expression temporaries); runs hundreds of times per step.
     m_law.eval(s, m_p);
-    m_du = y[1] - m_law.gamma * m_p.ub;
+    m_tmp = m_law.gamma * m_p.ub();
+    m_du = y[1] - m_tmp;
     if (direction > 0 ? !(m_du > 0) : !(m_du < 0)) return false;
-    m_jac = m_law.Q * m_p.vq1 / m_du;  // dtau/ds
-    d[0] = m_jac;
-    d[1] = m_jac * (m_law.g - m_p.ua);
-    d[2] = m_law.Q * m_du * m_law.s_power_for_dissipation(s, m_p);
+    d[0] = m_p.vq1();
+    m_law.times_Q(d[0]);
+    d[0] /= m_du;  // dtau/ds = Q s^(Q-1) / u'
+    d[1] = m_law.g - m_p.ua();
+    d[1] *= d[0];
+    d[2] = m_du * m_law.s_power_for_dissipation(m_p);
+    m_law.times_Q(d[2]);
     return true;
   }
 
@@ -391,23 +465,27 @@ class adaptive_impact_solver {
   bool t_rhs(const W&, const impact_state<W>& z, impact_state<W>& d) {
     if (!(z[0] > 0)) return false;
     m_law.eval(z[0], m_p);
-    m_du = z[1] - m_law.gamma * m_p.ub;
-    d[0] = m_du / (m_law.Q * m_p.vq1);
-    d[1] = m_law.g - m_p.ua;
-    d[2] = m_du * m_du * m_p.ub1;
+    m_tmp = m_law.gamma * m_p.ub();
+    m_du = z[1] - m_tmp;
+    m_tmp = m_p.vq1();
+    m_law.times_Q(m_tmp);
+    d[0] = m_du / m_tmp;  // v' = u' / (Q v^(Q-1))
+    d[1] = m_law.g - m_p.ua();
+    d[2] = m_du * m_du;
+    d[2] *= m_p.ub1();
     return true;
   }
 
   W du_of(const impact_state<W>& z) {
     m_law.eval(z[0], m_p);
-    return z[1] - m_law.gamma * m_p.ub;
+    return z[1] - m_law.gamma * m_p.ub();
   }
 
   // s -> tau when u |u''| > u'^2/2 (or u' is no longer safely away from 0).
   bool switch_to_tau(const W& s, const W& w) {
     typename regularised_law<W>::powers p;
     m_law.eval(s, p);
-    const W du = w - m_law.gamma * p.ub;
+    const W du = w - m_law.gamma * p.ub();
     return 2 * m_law.u_times_abs_acceleration(du, p) > du * du;
   }
 
@@ -415,8 +493,8 @@ class adaptive_impact_solver {
     using std::abs;
     typename regularised_law<W>::powers p;
     m_law.eval(z[0], p);
-    const W du = z[1] - m_law.gamma * p.ub;
-    W h = p.u / (4 * abs(du));
+    const W du = z[1] - m_law.gamma * p.ub();
+    W h = p.u() / (4 * abs(du));
     const W cap = W(1) / 4;
     if (!(h < cap)) h = cap;
     return h;
@@ -448,26 +526,32 @@ class adaptive_impact_solver {
     W h = (fa == fb) ? W((a + b) / 2) : W(a + (b - a) * fa / (fa - fb));
     // NOTE: Newton converges quadratically until rounding noise in the fixed step
     // dominates; then the corrections stop shrinking and the best iterate is kept.
+    // Each iterate costs a whole GBS step, so it stops as soon as the correction
+    // delta is below sqrt(eps)/16 of the time scale: the next iterate is then right
+    // to O(delta^2) (quadratic convergence), and the state is taken where it was
+    // computed, at distance delta from the root, where u' = O(delta) and u is off by
+    // O(u'' delta^2) <= eps/256 relative: no further step is needed for either.
     const int budget = 4 * binary_digits<W>() + 20;
+    const W sqrt_eps = sqrt(epsilon<W>());
     W best_h = h, best_du = -1, previous_delta = -1;
     for (int it = 0; it < budget; ++it) {
       if (!m_t_int.fixed_step(rhs_t, tau0, z0, h, columns, at))
         throw convergence_error("solve_impact_adaptive: event location left the domain for " + m_where);
       typename regularised_law<W>::powers p;
       m_law.eval(at[0], p);
-      const W du = at[1] - m_law.gamma * p.ub;
+      const W du = at[1] - m_law.gamma * p.ub();
       if (best_du < 0 || abs(du) < best_du) best_du = abs(du), best_h = h;
-      const W ddu = m_law.g - p.ua - m_law.gamma_beta * p.ub1 * du;  // u''
+      const W ddu = m_law.g - p.ua() - m_law.gamma_beta * p.ub1() * du;  // u''
       if (du == 0 || ddu == 0) return tau0 + h;
       W next = h - du / ddu;
       if (next < 0) next = h / 2;
       if (next > H) next = (h + H) / 2;
       const W delta = abs(next - h);
-      const bool converged = delta <= 4 * epsilon<W>() * (abs(tau0) + abs(h));
-      const bool stalled = previous_delta >= 0 && delta >= previous_delta / 2 &&
-                           delta <= sqrt(epsilon<W>()) * (abs(tau0) + abs(h));
-      if (converged || stalled) {
-        h = converged ? next : best_h;
+      const W scale = abs(tau0) + abs(h);
+      if (delta <= sqrt_eps * scale / 16) return tau0 + next;
+      const bool stalled = previous_delta >= 0 && delta >= previous_delta / 2 && delta <= sqrt_eps * scale;
+      if (stalled) {
+        h = best_h;
         m_t_int.fixed_step(rhs_t, tau0, z0, h, columns, at);
         return tau0 + h;
       }
@@ -490,9 +574,9 @@ class adaptive_impact_solver {
     typename regularised_law<W>::powers p;
     m_law.eval(v, p);
     const W u_star = pow(m_law.g, 1 / m_law.alpha);
-    const W x = p.u - u_star;
+    const W x = p.u() - u_star;
     if (x == 0 || (x > 0) == (du > 0)) return x == 0 && du == 0;
-    const W lower = x > 0 ? u_star : p.u, upper = x > 0 ? p.u : u_star;
+    const W lower = x > 0 ? u_star : p.u(), upper = x > 0 ? p.u() : u_star;
     const W damping = m_law.gamma_beta * pow(lower, m_law.beta - 1);
     const W stiffness = m_law.alpha * pow(upper, m_law.alpha - 1);
     if (damping * damping >= 4 * stiffness && 2 * abs(du) <= damping * abs(x)) return true;
@@ -508,12 +592,37 @@ class adaptive_impact_solver {
   gbs_integrator<W, 3> m_s_int, m_t_int;
   std::string m_where;
   typename regularised_law<W>::powers m_p;
-  W m_du = 0, m_jac = 0, m_error = 0;
+  W m_du = 0, m_tmp = 0, m_error = 0;
   std::vector<W> m_du_nodes;
 
  public:
   const W& accumulated_error() const { return m_error; }
 };
+
+}  // namespace detail
+
+namespace detail {
+
+template <class W, class Real>
+impact_result<Real> solve_impact_adaptive_in(const contact_law& law, const Real& gamma, const Real& g,
+                                             const solve_options<Real>& options, int guard);
+
+template <class Work, class = void>
+struct has_wide_work : std::false_type {};
+template <class Work>
+struct has_wide_work<Work, std::enable_if_t<Work::has_wide>> : std::true_type {};
+
+/// Whether the local tolerance, 64 (1 + |g|) below Real's, falls under the rounding
+/// floor of the work type W with `guard` digits (then the wide work type is used).
+template <class Real, class W>
+bool needs_wide_work(const solve_options<Real>& options, const Real& g, int guard) {
+  using std::abs;
+  scoped_precision precision(decimal_digits<Real>() + guard);
+  const Real eps_real = epsilon<Real>();
+  const Real tol_real = options.tolerance > 0 && options.tolerance > eps_real ? options.tolerance : eps_real;
+  const W rtol = to_work<W>(tol_real) / (64 * (1 + abs(to_work<W>(g))));
+  return rtol < gbs_rounding_floor(rtol);
+}
 
 }  // namespace detail
 
@@ -525,9 +634,21 @@ impact_result<Real> solve_impact_adaptive(const contact_law& law, const Real& ga
   impact_parameters<Real>{law, gamma, g}.validate();
   require_non_negative(options.tolerance, "tolerance");
   if (options.max_steps == 0) throw invalid_parameter("parameter max_steps must be > 0, got 0");
-  using W = typename detail::gbs_work<Real>::type;
+  using work = detail::gbs_work<Real>;
+  if constexpr (detail::has_wide_work<work>::value) {
+    if (detail::needs_wide_work<Real, typename work::type>(options, g, work::guard_digits()))
+      return detail::solve_impact_adaptive_in<typename work::wide_type>(law, gamma, g, options,
+                                                                       work::wide_guard_digits());
+  }
+  return detail::solve_impact_adaptive_in<typename work::type>(law, gamma, g, options, work::guard_digits());
+}
+
+namespace detail {
+
+template <class W, class Real>
+impact_result<Real> solve_impact_adaptive_in(const contact_law& law, const Real& gamma, const Real& g,
+                                             const solve_options<Real>& options, int guard) {
   const int real_digits = decimal_digits<Real>();
-  const int guard = detail::gbs_work<Real>::guard_digits();
   const Real eps_real = epsilon<Real>();
   const Real tol_real = options.tolerance > 0 && options.tolerance > eps_real ? options.tolerance : eps_real;
   const std::string where = law.describe() + ", gamma = " + to_decimal_string(gamma) + ", g = " + to_decimal_string(g);
@@ -545,8 +666,8 @@ impact_result<Real> solve_impact_adaptive(const contact_law& law, const Real& ga
   using std::abs;
   using std::pow;
   const int max_columns = detail::gbs_max_columns(decimal_digits<W>(), guard);
-  const W rounding_floor = epsilon<W>() * pow(W(10), W(36 * max_columns) / 100);
   W rtol = detail::to_work<W>(tol_real) / (64 * (1 + abs(w_g)));
+  const W rounding_floor = detail::gbs_rounding_floor(rtol);
   if (rtol < rounding_floor) rtol = rounding_floor;
   const W eps_e = detail::to_work<W>(tol_real);
   detail::adaptive_impact_solver<W> solver(law, w_gamma, w_g, rtol, eps_e, options.max_steps, max_columns, where);
@@ -578,5 +699,7 @@ impact_result<Real> solve_impact_adaptive(const contact_law& law, const Real& ga
   r.error_estimate = detail::from_work<Real>(err, caller_digits);
   return r;
 }
+
+}  // namespace detail
 
 }  // namespace viscor
