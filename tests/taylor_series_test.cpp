@@ -91,6 +91,31 @@ TYPED_TEST(TaylorSeries, RealPowerSatisfiesItsDefiningIdentity) {
   }
 }
 
+// The variant with 1/a0 and the table 1/k given (no divisions in the jets),
+// and divide_by, on the same series: the identity b^2 a = 1 again.
+TYPED_TEST(TaylorSeries, RealPowerWithReciprocalTable) {
+  using Real = TypeParam;
+  std::vector<Real> a(order + 1, Real(0)), ja(order + 1, Real(0)), b(order + 1), b2(order + 1), check(order + 1);
+  a[0] = 2, a[2] = 1, a[3] = Real(-1) / 3;
+  for (std::size_t j = 0; j <= order; ++j) ja[j] = a[j] * Real(static_cast<long>(j));
+  using std::pow;
+  const Real p = Real(-1) / 2;
+  const std::vector<Real> inv = detail::integer_reciprocals<Real>(order);
+  const Real inv_a0 = 1 / a[0];
+  b[0] = pow(a[0], p);
+  Real scratch;
+  for (std::size_t k = 1; k <= order; ++k)
+    detail::real_power(b[k], scratch, Real(p + 1), a.data(), ja.data(), b.data(), k, inv_a0, inv);
+  for (std::size_t k = 0; k <= order; ++k) detail::product(b2[k], b.data(), b.data(), k);
+  for (std::size_t k = 0; k <= order; ++k) {
+    detail::product(check[k], b2.data(), a.data(), k);
+    EXPECT_PRED_FORMAT3(absolute_close<Real>, check[k], Real(k == 0 ? 1 : 0), Real(64 * epsilon<Real>()));
+  }
+  Real x = 6;
+  detail::divide_by(x, 3, inv);
+  EXPECT_PRED_FORMAT3(absolute_close<Real>, x, Real(2), Real(2 * epsilon<Real>()));
+}
+
 TYPED_TEST(TaylorSeries, ExponentialOfLinearAndHorner) {
   using Real = TypeParam;
   const std::size_t n = 80;  // (0.15)^80 / 80! < 1e-180: no truncation at any tested type

@@ -58,6 +58,18 @@ constexpr bool has_fixed_precision() {
 #endif
 }
 
+namespace detail {
+/// True for the MPFR types (fixed or run-time precision).
+template <class Real>
+struct is_mpfr : std::false_type {};
+#if VISCOR_HAS_MPFR
+template <unsigned Digits, boost::multiprecision::mpfr_allocation_type Allocation,
+          boost::multiprecision::expression_template_option ET>
+struct is_mpfr<boost::multiprecision::number<boost::multiprecision::mpfr_float_backend<Digits, Allocation>, ET>>
+    : std::true_type {};
+#endif
+}  // namespace detail
+
 }  // namespace viscor
 
 // X-macro over the scalar types compiled into libviscor (src/instantiation.cpp.in).

@@ -25,6 +25,7 @@
 
 #include <boost/math/special_functions/fpclassify.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -77,8 +78,7 @@ class taylor_integrator {
         m_order(taylor_order(tolerance)),
         m_jet(system.size(), m_order),
         m_window(m_order < 4 ? m_order : 4) {
-    using std::exp;
-    m_safety = exp(Real(-0.7) / Real(static_cast<long>(m_order - 1)) - 2);
+    m_log_safety = -0.7 / static_cast<double>(m_order - 1) - 2;
   }
 
   std::size_t order() const noexcept { return m_order; }
@@ -96,33 +96,44 @@ class taylor_integrator {
   }
 
   /// The Jorba-Zou step of the current jet (see the file comment), capped at |h_max|.
+  /// NOTE: computed in double (logarithms of the coefficients): a step needs a
+  /// few digits, and log/exp at the working precision cost 10% of a float128 run.
   Real step_size(const Real& h_max) const {
     using std::abs;
-    using std::exp;
-    using std::log;
     using boost::math::isfinite;
     const std::size_t p = m_order;
     // max over states and orders of log(|x_i[k]| / s_i) / k = -log(rho)
-    Real log_inv_rho = -std::numeric_limits<Real>::infinity();
+    double log_inv_rho = -std::numeric_limits<double>::infinity();
     bool any = false;
     for (std::size_t i = 0; i < m_jet.size(); ++i) {
       const Real* c = m_jet[i];
       const Real scale = m_system.step_scale(i, c[0]);
       if (!(scale > 0)) continue;
+      const double log_scale = detail::log_abs(scale);
       // NOTE: Jorba-Zou use orders p-1 and p. Series of the endpoint systems can
       // be sparse (only every Q(alpha+1)-th term at s = 0), so we take the
       // smallest radius over the last m_window orders: never larger, and never
       // blind to a series whose last two terms happen to vanish.
       for (std::size_t k = p + 1 - m_window; k <= p; ++k) {
         if (c[k] == 0) continue;
-        const Real l = log(Real(abs(c[k]) / scale)) / Real(static_cast<long>(k));
-        if (!any || l > log_inv_rho) log_inv_rho = l;
+        const double l = (detail::log_abs(c[k]) - log_scale) / static_cast<double>(k);
+        if (!any || l > log_inv_rho || std::isnan(l)) log_inv_rho = l;
         any = true;
       }
     }
-    const Real rho = any ? Real(exp(-log_inv_rho)) : Real(std::numeric_limits<Real>::infinity());
-    Real h = rho * m_safety;
-    if (!isfinite(h) || h > abs(h_max)) h = abs(h_max);
+    Real h = abs(h_max);
+    if (any && !std::isnan(log_inv_rho)) {
+      // h = rho exp(-0.7/(p-1)) / e^2 = 2^l2, built from its binary exponent (the
+      // range of Real may exceed double's)
+      constexpr double ln2 = 0.693147180559945309417;
+      double l2 = (m_log_safety - log_inv_rho) / ln2;
+      if (l2 < -1e9) l2 = -1e9;
+      if (l2 > 1e9) l2 = 1e9;
+      const double n = std::floor(l2);
+      using std::ldexp;
+      const Real jz = ldexp(Real(std::exp2(l2 - n)), static_cast<int>(n));
+      if (isfinite(jz) && jz < h) h = jz;
+    }
     if (h_max < 0) h = -h;
     limit_cancellation(h);
     return h;
@@ -133,32 +144,45 @@ class taylor_integrator {
   /// NOTE: the Horner sum's rounding error is ~eps sum |x_i[k] h^k|. For entire
   /// solutions (fast decaying modes, e^(-lambda t)) the Jorba-Zou radius grows
   /// like p/e with the order, and the sum with it like e^(lambda h): at 300
-  /// digits (p = 346) 7 digits were lost per step without this cap.
+  /// digits (p = 346) 7 digits were lost per step without this cap. The sums
+  /// are formed in double from the logarithms of the terms (a factor 8 needs
+  /// no more).
   void limit_cancellation(Real& h) const {
-    using std::abs;
     // NOTE: the worst case, an entire series (x^k/k! at the Jorba-Zou step,
     // x = p/e^3), sums to e^(p/e^3): below the factor K = 8 up to p = 41
     // (double, long double, float128), so there the check is skipped.
     if (m_order <= 41) return;
+    const std::size_t n = m_jet.size(), stride = m_order + 1;
+    m_log.resize(n * stride);
+    m_negative.resize(n * stride);
+    m_log_scale.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const Real* c = m_jet[i];
+      const Real scale = m_system.step_scale(i, c[0]);
+      m_log_scale[i] = scale > 0 ? detail::log_abs(scale) : std::numeric_limits<double>::quiet_NaN();
+      for (std::size_t k = 0; k <= m_order; ++k) {
+        m_log[i * stride + k] = detail::log_abs(c[k]);
+        m_negative[i * stride + k] = c[k] < 0;
+      }
+    }
     for (int tries = 0; tries < 64; ++tries) {
+      const double log_h = detail::log_abs(h);
+      const bool h_negative = h < 0;
       bool ok = true;
-      for (std::size_t i = 0; i < m_jet.size() && ok; ++i) {
-        const Real* c = m_jet[i];
-        const Real scale = m_system.step_scale(i, c[0]);
-        if (!(scale > 0)) continue;
-        // m_sum = sum |c_k| |h|^k, m_value = sum c_k h^k (Horner both)
-        m_sum = abs(c[m_order]);
-        m_value = c[m_order];
-        m_abs_h = abs(h);
-        for (std::size_t k = m_order; k-- > 0;) {
-          m_sum *= m_abs_h;
-          m_sum += abs(c[k]);
-          m_value *= h;
-          m_value += c[k];
+      for (std::size_t i = 0; i < n && ok; ++i) {
+        if (std::isnan(m_log_scale[i])) continue;
+        const double* l = &m_log[i * stride];
+        double top = -std::numeric_limits<double>::infinity();
+        for (std::size_t k = 0; k <= m_order; ++k) top = std::max(top, l[k] + static_cast<double>(k) * log_h);
+        if (!std::isfinite(top)) continue;
+        double sum = 0, value = 0;
+        for (std::size_t k = 0; k <= m_order; ++k) {
+          const double term = std::exp(l[k] + static_cast<double>(k) * log_h - top);
+          sum += term;
+          value += (m_negative[i * stride + k] != (h_negative && k % 2 == 1)) ? -term : term;
         }
-        m_value = abs(m_value);
-        if (m_value < scale) m_value = scale;
-        ok = m_sum <= m_cancellation * m_value;
+        const double floor = std::exp(m_log_scale[i] - top);
+        ok = sum <= m_cancellation * std::max(std::fabs(value), floor);
       }
       if (ok) return;
       h *= Real(3) / 4;
@@ -197,9 +221,10 @@ class taylor_integrator {
   std::size_t m_order;
   taylor_jet<Real> m_jet;
   std::size_t m_window;  // orders p - window + 1 .. p enter the radius estimate
-  Real m_safety;         // exp(-0.7/(p-1)) / e^2
-  Real m_cancellation = 8;  // at most one digit lost to cancellation per step
-  mutable Real m_sum, m_value, m_abs_h;
+  double m_log_safety;   // ln(exp(-0.7/(p-1)) / e^2)
+  double m_cancellation = 8;  // at most one digit lost to cancellation per step
+  mutable std::vector<double> m_log, m_log_scale;  // scratch of limit_cancellation
+  mutable std::vector<bool> m_negative;
 };
 
 }  // namespace viscor

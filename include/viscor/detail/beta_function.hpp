@@ -16,15 +16,6 @@
 
 namespace viscor::detail {
 
-template <class Real>
-struct is_mpfr : std::false_type {};
-#if VISCOR_HAS_MPFR
-template <unsigned Digits, boost::multiprecision::mpfr_allocation_type Allocation,
-          boost::multiprecision::expression_template_option ET>
-struct is_mpfr<boost::multiprecision::number<boost::multiprecision::mpfr_float_backend<Digits, Allocation>, ET>>
-    : std::true_type {};
-#endif
-
 /// B(a, b) for a, b > 0: accuracy first (closed forms, built once per law).
 template <class Real>
 Real beta_function(const Real& a, const Real& b) {

@@ -67,7 +67,8 @@ class time_system {
   enum : std::size_t { u = 0, v = 1, D = 2 };
 
   time_system(const impact_constants<Real>& c, std::size_t order)
-      : m_c(c), m_A(order + 2), m_P(order + 2), m_dP(order + 2), m_ju(order + 2) {}
+      : m_c(c), m_A(order + 2), m_P(order + 2), m_dP(order + 2), m_ju(order + 2),
+        m_inv(integer_reciprocals<Real>(order + 1)) {}
 
   std::size_t size() const { return 3; }
   // Step-control scales, set by jet(): D relative to itself (for the linear law
@@ -92,6 +93,8 @@ class time_system {
     Real* dP = m_dP.data();
     Real* ju = m_ju.data();
     ju[0] = 0;
+    m_inv_u0 = 1;
+    m_inv_u0 /= U[0];
     P[0] = m_c.beta_is_one ? U[0] : Real(pow(U[0], m_c.beta));
     if (m_c.alpha_equals_beta) {
       A = P;
@@ -99,14 +102,15 @@ class time_system {
       A[0] = pow(U[0], m_c.alpha);
     }
     for (std::size_t k = 0; k < p; ++k) {
-      if (k > 0 && !m_c.alpha_equals_beta) real_power(A[k], m_scratch, m_c.alpha_plus_one, U, ju, A, k);
+      if (k > 0 && !m_c.alpha_equals_beta)
+        real_power(A[k], m_scratch, m_c.alpha_plus_one, U, ju, A, k, m_inv_u0, m_inv);
       U[k + 1] = V[k];
-      U[k + 1] /= static_cast<long>(k + 1);
+      divide_by(U[k + 1], k + 1, m_inv);
       ju[k + 1] = V[k];
       if (m_c.beta_is_one) {
         P[k + 1] = U[k + 1];
       } else {
-        real_power(P[k + 1], m_scratch, m_c.beta_plus_one, U, ju, P, k + 1);
+        real_power(P[k + 1], m_scratch, m_c.beta_plus_one, U, ju, P, k + 1, m_inv_u0, m_inv);
       }
       dP[k] = P[k + 1];
       dP[k] *= static_cast<long>(k + 1);
@@ -117,11 +121,11 @@ class time_system {
       V[k + 1] += m_t;
       V[k + 1] = -V[k + 1];
       if (k == 0) V[k + 1] += m_c.g;
-      V[k + 1] /= static_cast<long>(k + 1);
+      divide_by(V[k + 1], k + 1, m_inv);
       // D' = 2 gamma v (u^beta)'
       product(E[k + 1], V, dP, k);
       E[k + 1] *= m_c.two_gamma;
-      E[k + 1] /= static_cast<long>(k + 1);
+      divide_by(E[k + 1], k + 1, m_inv);
     }
     set_scales(U[0], V[0], A[0], E[0]);
     if (m_c.alpha_is_one) {
@@ -160,8 +164,8 @@ class time_system {
   }
 
   const impact_constants<Real>& m_c;
-  std::vector<Real> m_A, m_P, m_dP, m_ju;
-  Real m_scratch, m_t, m_omega2;
+  std::vector<Real> m_A, m_P, m_dP, m_ju, m_inv;
+  Real m_scratch, m_t, m_omega2, m_inv_u0;
   Real m_scale[3];
 };
 
@@ -171,7 +175,8 @@ class endpoint_system {
   enum : std::size_t { v = 0, tau = 1, D = 2 };
 
   endpoint_system(const impact_constants<Real>& c, std::size_t order)
-      : m_c(c), m_order(order), m_J(order + 2), m_M(order + 2), m_L(order + 2), m_r(order + 2), m_tmp(order + 2) {
+      : m_c(c), m_order(order), m_J(order + 2), m_M(order + 2), m_L(order + 2), m_r(order + 2), m_tmp(order + 2),
+        m_inv(integer_reciprocals<Real>(order + 1)) {
     if (!c.use_root_variable) {
       m_lambda_alpha = c.alpha_plus_one;
       m_lambda_beta = c.beta;
@@ -202,18 +207,18 @@ class endpoint_system {
       const std::size_t lo_M = k > m_deg_M ? k - m_deg_M : 0;
       // sum over j of J[k-j] r[j] with k - j <= deg J
       convolution(T[k + 1], r, m_J.data(), k, lo_J, k);
-      T[k + 1] /= static_cast<long>(k + 1);
+      divide_by(T[k + 1], k + 1, m_inv);
       convolution(V[k + 1], r, m_M.data(), k, lo_M, k);
       if (k <= m_deg_L) {
         m_t = m_L[k];
         m_t *= m_c.gamma_beta;
         V[k + 1] -= m_t;
       }
-      V[k + 1] /= static_cast<long>(k + 1);
+      divide_by(V[k + 1], k + 1, m_inv);
       const std::size_t lo_L = k > m_deg_L ? k - m_deg_L : 0;
       convolution(E[k + 1], V, m_L.data(), k, lo_L, k);
       E[k + 1] *= m_c.two_gamma_beta;
-      E[k + 1] /= static_cast<long>(k + 1);
+      divide_by(E[k + 1], k + 1, m_inv);
     }
   }
 
@@ -237,7 +242,10 @@ class endpoint_system {
       m_deg_J = static_cast<std::size_t>(Q - 1);
       m_deg_L = static_cast<std::size_t>(m_c.Q_beta - 1);
       m_deg_M = static_cast<std::size_t>(std::max<long>(Q - 1, Q + m_c.Q_alpha - 1));
-      for (std::size_t j = 0; j <= p; ++j) {
+      // NOTE: only up to the degrees: beyond them the coefficients are 0 (a
+      // loop to the order was a fifth of the work of a float128 endpoint jet).
+      const std::size_t top = std::min(p, std::max({m_deg_J, m_deg_L, m_deg_M}));
+      for (std::size_t j = 0; j <= top; ++j) {
         m_J[j] *= Q;
         m_L[j] *= Q;
         m_M[j] = m_J[j];
@@ -263,7 +271,7 @@ class endpoint_system {
 
   const impact_constants<Real>& m_c;
   std::size_t m_order;
-  std::vector<Real> m_J, m_M, m_L, m_r, m_tmp, m_powers;
+  std::vector<Real> m_J, m_M, m_L, m_r, m_tmp, m_powers, m_inv;
   std::size_t m_deg_J = 0, m_deg_M = 0, m_deg_L = 0;
   Real m_lambda_alpha, m_lambda_beta, m_t;
 };
@@ -274,7 +282,7 @@ class spiral_system {
   enum : std::size_t { r = 0, theta = 1, D = 2 };
 
   spiral_system(const impact_constants<Real>& c, std::size_t order)
-      : m_c(c), m_R(order + 2), m_Y(order + 2) {
+      : m_c(c), m_R(order + 2), m_Y(order + 2), m_inv(integer_reciprocals<Real>(order + 1)) {
     m_time_rate = m_c.beta - 1;  // c - 1
     m_dissipation_rate = 2 * m_c.beta;
   }
@@ -305,23 +313,23 @@ class spiral_system {
       S[k + 1] += m_t;
       if (k == 0) S[k + 1] += m_c.gamma_beta;
       S[k + 1] = -S[k + 1];
-      S[k + 1] /= static_cast<long>(k + 1);
+      divide_by(S[k + 1], k + 1, m_inv);
       T[k + 1] = R[k];
       if (!m_c.alpha_is_one) {
         m_t = T[k];
         m_t *= m_time_rate;
         T[k + 1] += m_t;
       }
-      T[k + 1] /= static_cast<long>(k + 1);
+      divide_by(T[k + 1], k + 1, m_inv);
       product(E[k + 1], S, m_Y.data(), k);
       E[k + 1] *= m_c.two_gamma_beta;
-      E[k + 1] /= static_cast<long>(k + 1);
+      divide_by(E[k + 1], k + 1, m_inv);
     }
   }
 
  private:
   const impact_constants<Real>& m_c;
-  std::vector<Real> m_R, m_Y;
+  std::vector<Real> m_R, m_Y, m_inv;
   Real m_time_rate, m_dissipation_rate, m_t;
 };
 
