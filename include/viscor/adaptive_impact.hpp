@@ -262,7 +262,9 @@ class adaptive_impact_solver {
     // NOTE: Dt ~ s^(Q beta) near s = 0, and a pure power of degree above the
     // extrapolation order has a step-size-independent relative error: start from the
     // series then (and always for real exponents).
-    if (!m_law.rational || m_law.Qb + m_law.Q > 2 * m_s_int.max_columns() - 2) start_by_series(s, y);
+    // The order that counts is the one GBS starts at (it only climbs on accepted
+    // steps), not the most it may use: with a wider cap the start could stall.
+    if (!m_law.rational || m_law.Qb + m_law.Q > 2 * m_s_int.columns() - 2) start_by_series(s, y);
     const W scale = 1 + abs(m_law.g) + m_law.gamma;
     W h = pow(scale, -W(1) / W(m_law.Q)) / 8;
     auto rhs_s_up = [this](const W& s_, const impact_state<W>& y_, impact_state<W>& d) { return s_rhs(s_, y_, d, 1); };
