@@ -33,6 +33,7 @@
 // absorb; callers that integrate in Real itself lose ~0.3 j - 1 digits.
 #pragma once
 
+#include <viscor/detail/log_abs.hpp>
 #include <viscor/real_io.hpp>
 #include <viscor/real_types.hpp>
 
@@ -433,14 +434,14 @@ class gbs_integrator {
   }
 
   // H_j = H * 0.94 (0.65/err)^(1/(2j+1)), the factor clamped to [1/50, 4] (ODEX).
+  // NOTE: the factor in double from ln(err) (err may lie outside double's range):
+  // a step needs two digits, and pow at the working precision was 7% of a solve at
+  // 50 digits.
   Real optimal_step(const Real& H, const Real& err, int j) const {
-    using std::pow;
-    const Real lo = Real(1) / 50, hi = 4;
-    if (err == 0) return H * hi;
-    Real factor = Real(94) / 100 * pow(Real(65) / 100 / err, Real(1) / (2 * j + 1));
-    if (factor < lo) factor = lo;
-    if (factor > hi) factor = hi;
-    return H * factor;
+    if (err == 0) return H * 4;
+    const double log_factor = (std::log(0.65) - detail::log_abs(err)) / (2 * j + 1);
+    const double factor = std::clamp(0.94 * std::exp(log_factor), 1.0 / 50, 4.0);
+    return H * Real(factor);
   }
 
   void accept(Real& t, state& y, Real& h, int j, const Real& err, const Real& hj, const Real& work) {

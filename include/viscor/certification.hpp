@@ -1,7 +1,7 @@
 // Certified digits of a CoR: agreement of independent computations (issue 4).
 //
 //   1. the Taylor method (taylor_impact.hpp) at the working precision of Real;
-//   2. the Taylor method again at a higher precision (by default working + max(10,
+//   2. the Taylor method again at a higher precision (by default working + max(5,
 //      working/10) digits) with the tolerance of that precision: the reference;
 //   3. the adaptive GBS method (adaptive_impact.hpp) at the working precision.
 // The reported values are the reference rounded to Real. Their certified
@@ -16,19 +16,27 @@
 // reported as uncertified (outcome_certified = false, 0 digits), never averaged.
 // NOTE: the reference needs only to be right to more digits than Real carries, since
 // agreement is capped at the working digits and the safety margin comes off that.
-// 10 extra digits (working/10 from 100 digits up) are enough. Measured: the Taylor
+// 5 extra digits (working/10 from 50 digits up) are enough. Measured: the Taylor
 // solve at 60 (110, 25) digits against the one at twice that precision, five named
 // laws at (gamma, g) = (0.05, 1), (1e-3, 0.05), (0.5, 0), (0.9, 10), (1e-6, 0),
 // (2, 0.3): rebounds agree to >= 58 of 60 (109 of 110, 24 of 25) digits in e, 1 - e,
 // T_f and u_max; the one ill-conditioned quantity, the stick time of Hertz with
 // linear damping at (2, 0.3), loses 19 digits at every precision (41 of 60, 91 of
 // 110, 6 of 25), so the working computations lose them too and the reference stays
-// 10 digits ahead of anything they can agree on. (The linear law was left out of the
+// ahead of anything they can agree on. (The linear law was left out of the
 // 220-digit measurement: the Taylor solve was wrong for it at 200+ digits then, fixed
 // since, see taylor_impact.hpp and solve_impact_test's 210/300-digit cases.)
-// Cost (instructions, Kuwabara-Kono, the benchmark's points): +20, the former default,
-// was 1.9x a working Taylor solve at 50 digits and 1.5x at 100; +10 is 1.5x and 1.2x.
-// With 2 * digits + 10, set through certify_options, certify costs 8-13 Taylor solves.
+// Again at the reference precisions of double, long double, float128 and mpfr_50 (20,
+// 24, 39, 55 digits), eight points per law (the six above, (0.1, 0.05), (1e-4, 10)):
+// rebounds lose at most 0.6 digits, stick times 2.5 (Kuwabara-Kono at (0.9, 10)), the
+// ill-conditioned one 19-20 again. So the reference is ahead of the cap on every
+// well-conditioned quantity, and ahead of the working runs on the ill-conditioned one.
+// Cost (Kuwabara-Kono, the benchmark's points): the reference at 60 digits (+10, the
+// former default) was 1.8x a working Taylor solve at 50 digits, at 55 it is 1.25x:
+// 60 digits (201 bits) need a fourth limb and MPFR's generic product, 55 (184 bits)
+// stay on its three-limb fast path (which ends at 187 bits: mpfr_mul 7 ns there, 14 ns
+// at 188-192 bits, 17 ns at 193-256, measured with MPFR 4.2.0). At 100 digits +10 is
+// 1.16x. With 2 * digits + 10, set through certify_options, certify costs 8-13 Taylor solves.
 //
 // Near the sticking threshold e -> 0 and its relative digits fall (e ~ sqrt of the
 // distance to the threshold); absolute digits of e are reported as well.
@@ -74,7 +82,7 @@ inline std::string_view to_string(certified_source s) {
 struct certify_options {
   int safety_margin = 2;     ///< decimal digits subtracted from the agreement
   /// Precision of the reference run in decimal digits; 0: the default
-  /// detail::reference_digits<Real>() = working + max(10, working/10), in a fixed-precision
+  /// detail::reference_digits<Real>() = working + max(5, working/10), in a fixed-precision
   /// mpfr type (fast); any other value runs the reference in mpfr_real at that precision.
   int reference_digits = 0;
   std::optional<certified_source> perturb;  ///< test hook: which computation to perturb
@@ -132,8 +140,8 @@ int agreement_digits(const Ref& a, const Ref& b, const Ref& scale, int cap) {
   return static_cast<int>(d);
 }
 
-/// Default reference precision: working + max(10, working/10) decimal digits.
-constexpr int reference_extra_digits(int working) { return working / 10 > 10 ? working / 10 : 10; }
+/// Default reference precision: working + max(5, working/10) decimal digits.
+constexpr int reference_extra_digits(int working) { return working / 10 > 5 ? working / 10 : 5; }
 template <class Real>
 int reference_digits() {
   const int working = decimal_digits<Real>();
@@ -151,16 +159,16 @@ template <unsigned D>
 using mpfr_fixed = boost::multiprecision::number<boost::multiprecision::mpfr_float_backend<D>>;
 template <>
 struct certify_reference<double> {
-  using type = mpfr_fixed<25>;  // 15 + 10
+  using type = mpfr_fixed<20>;  // 15 + 5
 };
 template <>
 struct certify_reference<long double> {
-  using type = mpfr_fixed<29>;  // 19 + 10
+  using type = mpfr_fixed<24>;  // 19 + 5
 };
 #if VISCOR_HAS_FLOAT128
 template <>
 struct certify_reference<quad> {
-  using type = mpfr_fixed<44>;  // 34 + 10
+  using type = mpfr_fixed<39>;  // 34 + 5
 };
 #endif
 template <unsigned D, boost::multiprecision::mpfr_allocation_type A, boost::multiprecision::expression_template_option ET>

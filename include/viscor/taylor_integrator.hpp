@@ -125,18 +125,42 @@ class taylor_integrator {
     if (any && !std::isnan(log_inv_rho)) {
       // h = rho exp(-0.7/(p-1)) / e^2 = 2^l2, built from its binary exponent (the
       // range of Real may exceed double's)
-      constexpr double ln2 = 0.693147180559945309417;
-      double l2 = (m_log_safety - log_inv_rho) / ln2;
-      if (l2 < -1e9) l2 = -1e9;
-      if (l2 > 1e9) l2 = 1e9;
-      const double n = std::floor(l2);
-      using std::ldexp;
-      const Real jz = ldexp(Real(std::exp2(l2 - n)), static_cast<int>(n));
+      const Real jz = power_of_e(m_log_safety - log_inv_rho);
       if (isfinite(jz) && jz < h) h = jz;
     }
+    if constexpr (requires(const System& sys) { sys.tail_start(); }) limit_tail(h);
     if (h_max < 0) h = -h;
     limit_cancellation(h);
     return h;
+  }
+
+  /// Caps h > 0 so that the orders the system computed in lower precision (from
+  /// tail_start() on) stay below its bound: |x_i[k]| h^k <= exp(tail_log_bound()) s_i.
+  void limit_tail(Real& h) const {
+    const std::size_t start = m_system.tail_start();
+    if (start > m_order) return;
+    const double log_bound = m_system.tail_log_bound();
+    double l_max = -std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < m_jet.size(); ++i) {
+      const Real* c = m_jet[i];
+      const Real scale = m_system.step_scale(i, c[0]);
+      if (!(scale > 0)) continue;
+      const double log_scale = detail::log_abs(scale) + log_bound;
+      for (std::size_t k = start; k <= m_order; ++k)
+        if (c[k] != 0) l_max = std::max(l_max, (detail::log_abs(c[k]) - log_scale) / static_cast<double>(k));
+    }
+    if (!std::isfinite(l_max)) return;
+    const Real cap = power_of_e(-l_max);
+    if (cap < h) h = cap;
+  }
+
+  /// e^l as a Real, built from its binary exponent (Real's range may exceed double's).
+  static Real power_of_e(double l) {
+    using std::ldexp;
+    constexpr double ln2 = 0.693147180559945309417;
+    const double l2 = std::clamp(l / ln2, -1e9, 1e9);
+    const double n = std::floor(l2);
+    return ldexp(Real(std::exp2(l2 - n)), static_cast<int>(n));
   }
 
   /// Shrinks h until no component's step polynomial cancels by more than a

@@ -43,6 +43,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
+#include <type_traits>
 #include <vector>
 
 namespace viscor::detail {
@@ -61,14 +63,91 @@ struct impact_constants {
   long Q = 1, Q_alpha = 1, Q_beta = 1;
 };
 
+/// The arithmetic of the high orders of a time_system jet (void: Real itself).
+/// NOTE: a Taylor coefficient of order k enters the step as |x[k] h^k| ~ e^(-2k) of
+/// the state (Jorba-Zou step), so past order k_t ~ (digits of Real - 16) ln(10)/2 its
+/// relative accuracy need not exceed double's. For float128 that is the top 13 of 40
+/// orders, about half of the products of a jet, done in hardware instead of in
+/// software (libgcc's soft-float): a Kuwabara-Kono solve takes 1.9 ms instead of 2.4
+/// (gamma = 0.05, g = 1). taylor_integrator caps the step so that the orders computed
+/// in double contribute less than the tolerance (tail_log_bound; tested against
+/// 50-digit jets in taylor_tail_test). MPFR types keep their own arithmetic for now:
+/// double would take a smaller share of their orders (a third at 50 digits).
+template <class Real>
+struct taylor_tail {
+  using type = void;
+};
+#if VISCOR_HAS_FLOAT128
+template <>
+struct taylor_tail<quad> {
+  using type = double;
+};
+#endif
+
+/// Pointers to the series of one time_system jet in arithmetic T, with its scratch.
+template <class T>
+struct time_series {
+  T *U, *V, *E, *A, *P, *dP, *ju;
+  const std::vector<T>* inv;
+  T inv_u0, scratch, t;
+};
+
+/// Orders k_begin + 1 .. k_end of a time_system jet in arithmetic T, from orders
+/// 0 .. k_begin. Scaled: the series are in h' = h / H (coefficient k times H^k),
+/// i.e. the system's right-hand sides times H (see time_system::tail).
+template <class T, bool Scaled>
+void time_orders(time_series<T>& s, const impact_constants<T>& c, std::size_t k_begin, std::size_t k_end,
+                 const T& H) {
+  T *U = s.U, *V = s.V, *E = s.E, *A = s.A, *P = s.P, *dP = s.dP, *ju = s.ju;
+  const std::vector<T>& inv = *s.inv;
+  for (std::size_t k = k_begin; k < k_end; ++k) {
+    if (k > 0 && !c.alpha_equals_beta) real_power(A[k], s.scratch, c.alpha_plus_one, U, ju, A, k, s.inv_u0, inv);
+    // u' = v
+    ju[k + 1] = V[k];
+    if constexpr (Scaled) ju[k + 1] *= H;
+    U[k + 1] = ju[k + 1];
+    divide_by(U[k + 1], k + 1, inv);
+    if (c.beta_is_one) {
+      P[k + 1] = U[k + 1];
+    } else {
+      real_power(P[k + 1], s.scratch, c.beta_plus_one, U, ju, P, k + 1, s.inv_u0, inv);
+    }
+    dP[k] = P[k + 1];
+    dP[k] *= static_cast<long>(k + 1);
+    // v' = g - u^alpha - gamma (u^beta)'
+    s.t = dP[k];
+    s.t *= c.gamma;
+    V[k + 1] = A[k];
+    if constexpr (Scaled) V[k + 1] *= H;
+    V[k + 1] += s.t;
+    V[k + 1] = -V[k + 1];
+    if (k == 0) {
+      if constexpr (Scaled) {
+        V[k + 1] += H * c.g;
+      } else {
+        V[k + 1] += c.g;
+      }
+    }
+    divide_by(V[k + 1], k + 1, inv);
+    // D' = 2 gamma v (u^beta)'
+    product(E[k + 1], V, dP, k);
+    E[k + 1] *= c.two_gamma;
+    divide_by(E[k + 1], k + 1, inv);
+  }
+}
+
 template <class Real>
 class time_system {
  public:
   enum : std::size_t { u = 0, v = 1, D = 2 };
 
-  time_system(const impact_constants<Real>& c, std::size_t order)
+  time_system(const impact_constants<Real>& c, std::size_t order, const Real& tolerance)
       : m_c(c), m_A(order + 2), m_P(order + 2), m_dP(order + 2), m_ju(order + 2),
-        m_inv(integer_reciprocals<Real>(order + 1)) {}
+        m_inv(integer_reciprocals<Real>(order + 1)) {
+    m_series.P = m_P.data(), m_series.dP = m_dP.data(), m_series.ju = m_ju.data(), m_series.inv = &m_inv;
+    m_tail_start = order + 1;
+    if constexpr (!std::is_void_v<tail_type>) init_tail(order, tolerance);
+  }
 
   std::size_t size() const { return 3; }
   // Step-control scales, set by jet(): D relative to itself (for the linear law
@@ -81,57 +160,40 @@ class time_system {
   /// omega^2 = alpha u^(alpha-1) at the expansion point, set by jet(): the
   /// square of the fastest local frequency of the motion.
   const Real& stiffness() const { return m_omega2; }
+  /// First order computed in double by the last jet (order + 1: none), and ln of
+  /// the bound on |x_i[k] h^k| / s_i for those orders (taylor_integrator::step_size).
+  std::size_t tail_start() const { return m_last_tail_start; }
+  double tail_log_bound() const { return m_tail_log_bound; }
 
   void jet(const Real& /*tau0*/, taylor_jet<Real>& x) {
     using std::pow;
     const std::size_t p = x.order();
-    Real* U = x[u];
-    Real* V = x[v];
-    Real* E = x[D];
-    Real* A = m_A.data();
-    Real* P = m_P.data();
-    Real* dP = m_dP.data();
-    Real* ju = m_ju.data();
-    ju[0] = 0;
-    m_inv_u0 = 1;
-    m_inv_u0 /= U[0];
-    P[0] = m_c.beta_is_one ? U[0] : Real(pow(U[0], m_c.beta));
-    if (m_c.alpha_equals_beta) {
-      A = P;
-    } else {
-      A[0] = pow(U[0], m_c.alpha);
-    }
-    for (std::size_t k = 0; k < p; ++k) {
-      if (k > 0 && !m_c.alpha_equals_beta)
-        real_power(A[k], m_scratch, m_c.alpha_plus_one, U, ju, A, k, m_inv_u0, m_inv);
-      U[k + 1] = V[k];
-      divide_by(U[k + 1], k + 1, m_inv);
-      ju[k + 1] = V[k];
-      if (m_c.beta_is_one) {
-        P[k + 1] = U[k + 1];
-      } else {
-        real_power(P[k + 1], m_scratch, m_c.beta_plus_one, U, ju, P, k + 1, m_inv_u0, m_inv);
+    time_series<Real>& s = m_series;
+    s.U = x[u], s.V = x[v], s.E = x[D];
+    s.A = m_c.alpha_equals_beta ? s.P : m_A.data();
+    Real* U = s.U;
+    s.ju[0] = 0;
+    s.inv_u0 = 1;
+    s.inv_u0 /= U[0];
+    s.P[0] = m_c.beta_is_one ? U[0] : Real(pow(U[0], m_c.beta));
+    if (!m_c.alpha_equals_beta) s.A[0] = pow(U[0], m_c.alpha);
+    const std::size_t split = std::min(m_tail_start, p);
+    time_orders<Real, false>(s, m_c, 0, split, Real(1));
+    m_last_tail_start = p + 1;
+    if constexpr (!std::is_void_v<tail_type>) {
+      if (split < p) {
+        if (tail(s, split, p)) {
+          m_last_tail_start = split + 1;
+        } else {
+          time_orders<Real, false>(s, m_c, split, p, Real(1));
+        }
       }
-      dP[k] = P[k + 1];
-      dP[k] *= static_cast<long>(k + 1);
-      // v' = g - u^alpha - gamma (u^beta)'
-      m_t = dP[k];
-      m_t *= m_c.gamma;
-      V[k + 1] = A[k];
-      V[k + 1] += m_t;
-      V[k + 1] = -V[k + 1];
-      if (k == 0) V[k + 1] += m_c.g;
-      divide_by(V[k + 1], k + 1, m_inv);
-      // D' = 2 gamma v (u^beta)'
-      product(E[k + 1], V, dP, k);
-      E[k + 1] *= m_c.two_gamma;
-      divide_by(E[k + 1], k + 1, m_inv);
     }
-    set_scales(U[0], V[0], A[0], E[0]);
+    set_scales(U[0], x[v][0], s.A[0], x[D][0]);
     if (m_c.alpha_is_one) {
       m_omega2 = 1;
     } else {
-      m_omega2 = A[0];
+      m_omega2 = s.A[0];
       m_omega2 *= m_c.alpha;
       m_omega2 /= U[0];
     }
@@ -163,10 +225,82 @@ class time_system {
     m_scale[D] = abs(D0);
   }
 
+  using tail_type = typename taylor_tail<Real>::type;
+  using tail_arithmetic = std::conditional_t<std::is_void_v<tail_type>, double, tail_type>;
+
+  // The orders from which double suffices: |x[k] h^k| ~ e^(-2k) s at the Jorba-Zou
+  // step, and a coefficient computed in double is off by ~ 4 p eps_d of itself
+  // (k-term sums, one rounding each, inputs rounded to double); over the ~p/2 tail
+  // orders that stays below tol/4 if |x[k] h^k| <= B s, B = tol / (8 p^2 eps_d).
+  void init_tail(std::size_t order, const Real& tolerance) {
+    const double p = static_cast<double>(order);
+    const double eps_d = std::numeric_limits<tail_arithmetic>::epsilon();
+    m_tail_log_bound = log_abs(tolerance) - std::log(8 * p * p * eps_d);
+    const double start = std::ceil(-m_tail_log_bound / 2) + 1;
+    if (start < 2 || start + 2 > p) return;
+    m_tail_start = static_cast<std::size_t>(start);
+    const std::size_t n = order + 2;
+    for (auto* a : {&m_tU, &m_tV, &m_tE, &m_tA, &m_tP, &m_tdP, &m_tju}) a->assign(n, 0);
+    m_tinv = integer_reciprocals<tail_arithmetic>(order + 1);
+    auto& t = m_tail_c;
+    t.gamma = static_cast<tail_arithmetic>(m_c.gamma);
+    t.g = static_cast<tail_arithmetic>(m_c.g);
+    t.alpha_plus_one = static_cast<tail_arithmetic>(m_c.alpha_plus_one);
+    t.beta_plus_one = static_cast<tail_arithmetic>(m_c.beta_plus_one);
+    t.two_gamma = static_cast<tail_arithmetic>(m_c.two_gamma);
+    t.alpha_equals_beta = m_c.alpha_equals_beta;
+    t.beta_is_one = m_c.beta_is_one;
+  }
+
+  // Orders split + 1 .. p of s in double, in the time variable h' = h / H with H = 2^m
+  // near the radius of convergence (coefficients ~ 1, inside double's exponent range
+  // whatever Real's). False (nothing changed) when a needed value leaves that range.
+  bool tail(time_series<Real>& s, std::size_t split, std::size_t p) {
+    using std::ldexp;
+    // ln of the inverse radius from the last two Real orders of u and v
+    double l = -std::numeric_limits<double>::infinity();
+    for (const Real* c : {s.U, s.V}) {
+      const double log_scale = std::max(0.0, log_abs(c[0]));
+      for (std::size_t k = split - 1; k <= split; ++k)
+        if (c[k] != 0) l = std::max(l, (log_abs(c[k]) - log_scale) / static_cast<double>(k));
+    }
+    const int m = std::isfinite(l) ? static_cast<int>(std::lround(-l / std::log(2.0))) : 0;
+    // Convert orders 0 .. split (A, dP: 0 .. split - 1), coefficient k times H^k.
+    auto down = [&](const Real* from, tail_arithmetic* to, std::size_t last, int shift) {
+      for (std::size_t k = 0; k <= last; ++k) {
+        to[k] = static_cast<tail_arithmetic>(ldexp(from[k], static_cast<int>(k) * m + shift));
+        if (!std::isfinite(to[k])) return false;
+      }
+      return true;
+    };
+    const bool in_range = down(s.U, m_tU.data(), split, 0) && down(s.V, m_tV.data(), split, 0) &&
+                          down(s.E, m_tE.data(), split, 0) && down(s.P, m_tP.data(), split, 0) &&
+                          down(s.ju, m_tju.data(), split, 0) && down(s.A, m_tA.data(), split - 1, 0) &&
+                          down(s.dP, m_tdP.data(), split - 1, m);
+    const tail_arithmetic u0 = m_tU[0];
+    if (!in_range || !std::isnormal(u0) || !std::isnormal(m_tP[0]) || !std::isnormal(m_tA[0])) return false;
+    time_series<tail_arithmetic> t{m_tU.data(), m_tV.data(), m_tE.data(), m_tA.data(), m_tP.data(), m_tdP.data(),
+                                   m_tju.data(), &m_tinv, 1 / u0, 0, 0};
+    if (m_c.alpha_equals_beta) t.A = t.P;
+    time_orders<tail_arithmetic, true>(t, m_tail_c, split, p, std::ldexp(1.0, m));
+    for (std::size_t k = split + 1; k <= p; ++k) {
+      const int shift = -static_cast<int>(k) * m;
+      s.U[k] = ldexp(Real(m_tU[k]), shift);
+      s.V[k] = ldexp(Real(m_tV[k]), shift);
+      s.E[k] = ldexp(Real(m_tE[k]), shift);
+    }
+    return true;
+  }
+
   const impact_constants<Real>& m_c;
   std::vector<Real> m_A, m_P, m_dP, m_ju, m_inv;
-  Real m_scratch, m_t, m_omega2, m_inv_u0;
+  time_series<Real> m_series{};  // the jet's series; its scratch numbers are kept from jet to jet
+  Real m_scratch, m_t, m_omega2;
   Real m_scale[3];
+  std::size_t m_tail_start = 0, m_last_tail_start = 0;
+  double m_tail_log_bound = 0;
+  std::vector<tail_arithmetic> m_tU, m_tV, m_tE, m_tA, m_tP, m_tdP, m_tju, m_tinv;
+  impact_constants<tail_arithmetic> m_tail_c;
 };
 
 template <class Real>

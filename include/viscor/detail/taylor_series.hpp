@@ -15,6 +15,7 @@
 // digits and at 1000).
 #pragma once
 
+#include <viscor/detail/log_abs.hpp>
 #include <viscor/real_types.hpp>
 
 #include <cmath>
@@ -57,27 +58,6 @@ void mpfr_dot(mpfr_ptr acc, const Real* a, const Real* b, std::size_t k, std::si
   }
 }
 #endif
-
-/// ln|x| in double for any Real, whose exponent range may exceed double's (a
-/// few digits are all that step control needs); -inf for 0.
-template <class Real>
-double log_abs(const Real& x) {
-  constexpr double ln2 = 0.693147180559945309417;
-  if constexpr (std::is_same_v<Real, double>) {
-    return std::log(std::fabs(x));
-#if VISCOR_HAS_MPFR
-  } else if constexpr (is_mpfr<Real>::value) {
-    long e = 0;
-    const double m = mpfr_get_d_2exp(&e, raw(x), MPFR_RNDN);
-    return std::log(std::fabs(m)) + static_cast<double>(e) * ln2;
-#endif
-  } else {
-    using std::frexp;
-    int e = 0;
-    const Real m = frexp(x, &e);
-    return std::log(std::fabs(static_cast<double>(m))) + static_cast<double>(e) * ln2;
-  }
-}
 
 /// out = sum_{j=lo}^{hi} a[j] * b[k - j]: the k-th coefficient of a product
 /// restricted to j in [lo, hi].

@@ -1,0 +1,80 @@
+// The double tail of float128 time-phase jets (detail/impact_systems.hpp): the
+// orders computed in double must change the step polynomial by less than a quarter
+// of the tolerance at the step the integrator takes. Reference: the same jet
+// computed entirely at 50 digits (mpfr_50 has no tail), from the same state.
+#include <viscor/contact_law.hpp>
+#include <viscor/detail/impact_systems.hpp>
+#include <viscor/taylor_integrator.hpp>
+
+#include <gtest/gtest.h>
+
+#include "test_utils.hpp"
+
+#include <vector>
+
+namespace viscor {
+namespace {
+
+#if VISCOR_HAS_FLOAT128 && VISCOR_HAS_MPFR
+template <class Real>
+detail::impact_constants<Real> constants(const contact_law& law, const char* gamma, const char* g) {
+  detail::impact_constants<Real> c;
+  c.alpha = law.alpha.value<Real>();
+  c.beta = law.beta.value<Real>();
+  c.gamma = parse_real<Real>(gamma, "gamma");
+  c.g = parse_real<Real>(g, "g");
+  c.alpha_plus_one = c.alpha + 1;
+  c.beta_plus_one = c.beta + 1;
+  c.gamma_beta = c.gamma * c.beta;
+  c.two_gamma = 2 * c.gamma;
+  c.two_gamma_beta = 2 * c.gamma_beta;
+  c.alpha_equals_beta = law.alpha == law.beta;
+  c.alpha_is_one = law.alpha.is_rational() && law.alpha.numerator() == 1 && law.alpha.denominator() == 1;
+  c.beta_is_one = law.beta.is_rational() && law.beta.numerator() == 1 && law.beta.denominator() == 1;
+  return c;
+}
+
+TEST(TaylorTail, QuadJetWithinTheToleranceOfTheFullPrecisionJetAtTheStepTaken) {
+  using ts_quad = detail::time_system<quad>;
+  using ts_mpfr = detail::time_system<mpfr_50>;
+  const quad tol = epsilon<quad>();
+  const mpfr_50 tol_m = mpfr_50(tol);
+  int tails = 0;
+  for (const char* name : {"linear", "hertz_linear_damping", "tsuji", "kuwabara_kono", "hunt_crossley"}) {
+    const contact_law law = law_by_name(name);
+    for (auto [gamma, g] : {std::pair{"0.05", "1"}, {"1e-3", "0.05"}, {"0.5", "0"}, {"1e-4", "10"}}) {
+      const auto cq = constants<quad>(law, gamma, g);
+      const auto cm = constants<mpfr_50>(law, gamma, g);
+      // states along a compression and a restitution: (u, v, D)
+      for (auto [u, v] : {std::pair{"0.3", "0.9"}, {"1.1", "0.2"}, {"0.02", "-0.7"}, {"1e-6", "0.999"}}) {
+        ts_quad sq(cq, taylor_order(tol), tol);
+        ts_mpfr sm(cm, taylor_order(tol_m), tol_m);
+        taylor_integrator<quad, ts_quad> iq(sq, tol);
+        taylor_integrator<mpfr_50, ts_mpfr> im(sm, tol_m);
+        ASSERT_EQ(iq.order(), im.order());
+        const std::vector<quad> x{parse_real<quad>(u, "u"), parse_real<quad>(v, "v"), quad("1e-3")};
+        const std::vector<mpfr_50> xm{mpfr_50(x[0]), mpfr_50(x[1]), mpfr_50(x[2])};
+        const quad h = iq.expand(quad(0), x, quad(1e30));
+        im.expand(mpfr_50(0), xm, mpfr_50(1e30));
+        if (sq.tail_start() <= iq.order()) ++tails;
+        for (std::size_t i = 0; i < 3; ++i) {
+          // What the orders computed in double change in the step polynomial at h,
+          // against the design budget of a quarter of the tolerance on component i.
+          // (Below tail_start both jets differ by float128's own rounding only.)
+          mpfr_50 difference = 0;
+          for (std::size_t k = sq.tail_start(); k <= iq.order(); ++k)
+            difference += abs(mpfr_50(iq.jet()[i][k]) - im.jet()[i][k]) * pow(mpfr_50(h), static_cast<long>(k));
+          const mpfr_50 allowed = tol_m * mpfr_50(sq.step_scale(i, x[i])) / 4;
+          EXPECT_LE(difference, allowed) << name << " gamma = " << gamma << " g = " << g << " u = " << u
+                                         << " v = " << v << " component " << i << " h = " << h;
+        }
+      }
+    }
+  }
+  // The tail must actually have been used (else this test checks nothing new).
+  EXPECT_GT(tails, 60);
+}
+#endif
+
+}  // namespace
+}  // namespace viscor
