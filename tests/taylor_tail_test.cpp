@@ -1,4 +1,4 @@
-// The double tail of float128 time-phase jets (detail/impact_systems.hpp): the
+// The double tail of float128 jets (detail/taylor_tail.hpp), time and endpoint systems: the
 // orders computed in double must change the step polynomial by less than a quarter
 // of the tolerance at the step the integrator takes. Reference: the same jet
 // computed entirely at 50 digits (mpfr_50 has no tail), from the same state.
@@ -10,6 +10,7 @@
 
 #include "test_utils.hpp"
 
+#include <numeric>
 #include <vector>
 
 namespace viscor {
@@ -31,10 +32,28 @@ detail::impact_constants<Real> constants(const contact_law& law, const char* gam
   c.alpha_equals_beta = law.alpha == law.beta;
   c.alpha_is_one = law.alpha.is_rational() && law.alpha.numerator() == 1 && law.alpha.denominator() == 1;
   c.beta_is_one = law.beta.is_rational() && law.beta.numerator() == 1 && law.beta.denominator() == 1;
+  if (law.alpha.is_rational() && law.beta.is_rational()) {  // u = s^Q, as taylor_impact.hpp
+    const long q = std::lcm(law.alpha.denominator(), law.beta.denominator());
+    c.use_root_variable = true;
+    c.Q = q;
+    c.Q_alpha = q / law.alpha.denominator() * law.alpha.numerator();
+    c.Q_beta = q / law.beta.denominator() * law.beta.numerator();
+  }
   return c;
 }
 
-TEST(TaylorTail, QuadJetWithinTheToleranceOfTheFullPrecisionJetAtTheStepTaken) {
+// What the orders from tail_start on change in the step polynomial at h: the
+// difference of the two jets there, summed over those orders.
+template <class Integrator>
+mpfr_50 tail_difference(const taylor_jet<quad>& jq, const Integrator& im, std::size_t i, std::size_t start,
+                        const quad& h) {
+  mpfr_50 difference = 0;
+  for (std::size_t k = start; k <= jq.order(); ++k)
+    difference += abs(mpfr_50(jq[i][k]) - im.jet()[i][k]) * pow(mpfr_50(h), static_cast<long>(k));
+  return difference;
+}
+
+TEST(TaylorTail, TimeJetWithinTheToleranceOfTheFullPrecisionJetAtTheStepTaken) {
   using ts_quad = detail::time_system<quad>;
   using ts_mpfr = detail::time_system<mpfr_50>;
   const quad tol = epsilon<quad>();
@@ -58,12 +77,9 @@ TEST(TaylorTail, QuadJetWithinTheToleranceOfTheFullPrecisionJetAtTheStepTaken) {
         im.expand(mpfr_50(0), xm, mpfr_50(1e30));
         if (sq.tail_start() <= iq.order()) ++tails;
         for (std::size_t i = 0; i < 3; ++i) {
-          // What the orders computed in double change in the step polynomial at h,
-          // against the design budget of a quarter of the tolerance on component i.
+          // Against the design budget of a quarter of the tolerance on component i.
           // (Below tail_start both jets differ by float128's own rounding only.)
-          mpfr_50 difference = 0;
-          for (std::size_t k = sq.tail_start(); k <= iq.order(); ++k)
-            difference += abs(mpfr_50(iq.jet()[i][k]) - im.jet()[i][k]) * pow(mpfr_50(h), static_cast<long>(k));
+          const mpfr_50 difference = tail_difference(iq.jet(), im, i, sq.tail_start(), h);
           const mpfr_50 allowed = tol_m * mpfr_50(sq.step_scale(i, x[i])) / 4;
           EXPECT_LE(difference, allowed) << name << " gamma = " << gamma << " g = " << g << " u = " << u
                                          << " v = " << v << " component " << i << " h = " << h;
@@ -73,6 +89,49 @@ TEST(TaylorTail, QuadJetWithinTheToleranceOfTheFullPrecisionJetAtTheStepTaken) {
   }
   // The tail must actually have been used (else this test checks nothing new).
   EXPECT_GT(tails, 60);
+}
+
+TEST(TaylorTail, EndpointJetWithinTheToleranceOfTheFullPrecisionJetAtTheStepTaken) {
+  using es_quad = detail::endpoint_system<quad>;
+  using es_mpfr = detail::endpoint_system<mpfr_50>;
+  const quad tol = epsilon<quad>();
+  const mpfr_50 tol_m = mpfr_50(tol);
+  int tails = 0;
+  std::vector<contact_law> laws;
+  for (const char* name : {"linear", "hertz_linear_damping", "tsuji", "kuwabara_kono", "hunt_crossley"})
+    laws.push_back(law_by_name(name));
+  // real exponents (denominators beyond exponent::max_denominator): u = exp(sigma)
+  laws.push_back(make_law(exponent::parse("1.3000000000000000000001", "alpha"),
+                          exponent::parse("1.7000000000000000000001", "beta")));
+  for (const contact_law& law : laws) {
+    for (auto [gamma, g] : {std::pair{"0.05", "1"}, {"1e-3", "0.05"}, {"0.5", "0"}, {"1e-4", "10"}}) {
+      const auto cq = constants<quad>(law, gamma, g);
+      const auto cm = constants<mpfr_50>(law, gamma, g);
+      // (sigma, v): the start of contact, on the way in, on the way out
+      const bool root = cq.use_root_variable;
+      for (auto [sigma, v] : {std::pair{root ? "0" : "-20", "1"}, {root ? "0.3" : "-2", "0.8"},
+                              {root ? "0.5" : "-1", "-0.6"}}) {
+        es_quad sq(cq, taylor_order(tol), tol);
+        es_mpfr sm(cm, taylor_order(tol_m), tol_m);
+        taylor_integrator<quad, es_quad> iq(sq, tol);
+        taylor_integrator<mpfr_50, es_mpfr> im(sm, tol_m);
+        const quad s0 = parse_real<quad>(sigma, "sigma");
+        const std::vector<quad> x{parse_real<quad>(v, "v"), quad("0.1"), quad("1e-3")};
+        const std::vector<mpfr_50> xm{mpfr_50(x[0]), mpfr_50(x[1]), mpfr_50(x[2])};
+        const quad h = iq.expand(s0, x, quad(1e30));
+        im.expand(mpfr_50(s0), xm, mpfr_50(1e30));
+        if (sq.tail_start() <= iq.order()) ++tails;
+        for (std::size_t i = 0; i < 3; ++i) {
+          const mpfr_50 difference = tail_difference(iq.jet(), im, i, sq.tail_start(), h);
+          const mpfr_50 allowed = tol_m * mpfr_50(sq.step_scale(i, x[i])) / 4;
+          EXPECT_LE(difference, allowed) << law.describe() << " gamma = " << gamma << " g = " << g
+                                         << " sigma = " << sigma << " v = " << v << " component " << i
+                                         << " h = " << h;
+        }
+      }
+    }
+  }
+  EXPECT_GT(tails, 50);
 }
 #endif
 

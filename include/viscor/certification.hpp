@@ -2,7 +2,7 @@
 //
 //   1. the Taylor method (taylor_impact.hpp) at the working precision of Real;
 //   2. the Taylor method again at a higher precision (by default working + max(5,
-//      working/10) digits) with the tolerance of that precision: the reference;
+//      working/20) digits) with the tolerance of that precision: the reference;
 //   3. the adaptive GBS method (adaptive_impact.hpp) at the working precision.
 // The reported values are the reference rounded to Real. Their certified
 // significant digits are the smallest number of digits on which 1 and 3 agree with
@@ -16,7 +16,7 @@
 // reported as uncertified (outcome_certified = false, 0 digits), never averaged.
 // NOTE: the reference needs only to be right to more digits than Real carries, since
 // agreement is capped at the working digits and the safety margin comes off that.
-// 5 extra digits (working/10 from 50 digits up) are enough. Measured: the Taylor
+// 5 extra digits (working/20 from 100 digits up) are enough. Measured: the Taylor
 // solve at 60 (110, 25) digits against the one at twice that precision, five named
 // laws at (gamma, g) = (0.05, 1), (1e-3, 0.05), (0.5, 0), (0.9, 10), (1e-6, 0),
 // (2, 0.3): rebounds agree to >= 58 of 60 (109 of 110, 24 of 25) digits in e, 1 - e,
@@ -26,17 +26,17 @@
 // ahead of anything they can agree on. (The linear law was left out of the
 // 220-digit measurement: the Taylor solve was wrong for it at 200+ digits then, fixed
 // since, see taylor_impact.hpp and solve_impact_test's 210/300-digit cases.)
-// Again at the reference precisions of double, long double, float128 and mpfr_50 (20,
-// 24, 39, 55 digits), eight points per law (the six above, (0.1, 0.05), (1e-4, 10)):
-// rebounds lose at most 0.6 digits, stick times 2.5 (Kuwabara-Kono at (0.9, 10)), the
-// ill-conditioned one 19-20 again. So the reference is ahead of the cap on every
+// Again at the reference precisions of double, long double, float128, mpfr_50 and
+// mpfr_100 (20, 24, 39, 55, 105 digits), eight points per law (the six above, (0.1,
+// 0.05), (1e-4, 10)): rebounds lose at most 0.6 digits, stick times 2.5 (Kuwabara-Kono
+// at (0.9, 10)), the ill-conditioned one 19-20 again. So the reference is ahead of the cap on every
 // well-conditioned quantity, and ahead of the working runs on the ill-conditioned one.
 // Cost (Kuwabara-Kono, the benchmark's points): the reference at 60 digits (+10, the
 // former default) was 1.8x a working Taylor solve at 50 digits, at 55 it is 1.25x:
 // 60 digits (201 bits) need a fourth limb and MPFR's generic product, 55 (184 bits)
 // stay on its three-limb fast path (which ends at 187 bits: mpfr_mul 7 ns there, 14 ns
-// at 188-192 bits, 17 ns at 193-256, measured with MPFR 4.2.0). At 100 digits +10 is
-// 1.16x. With 2 * digits + 10, set through certify_options, certify costs 8-13 Taylor solves.
+// at 188-192 bits, 17 ns at 193-256, measured with MPFR 4.2.0). At 100 digits +10 was
+// 1.16x, +5 is 1.08x. With 2 * digits + 10, set through certify_options, certify costs 8-13 Taylor solves.
 //
 // Near the sticking threshold e -> 0 and its relative digits fall (e ~ sqrt of the
 // distance to the threshold); absolute digits of e are reported as well.
@@ -82,7 +82,7 @@ inline std::string_view to_string(certified_source s) {
 struct certify_options {
   int safety_margin = 2;     ///< decimal digits subtracted from the agreement
   /// Precision of the reference run in decimal digits; 0: the default
-  /// detail::reference_digits<Real>() = working + max(5, working/10), in a fixed-precision
+  /// detail::reference_digits<Real>() = working + max(5, working/20), in a fixed-precision
   /// mpfr type (fast); any other value runs the reference in mpfr_real at that precision.
   int reference_digits = 0;
   std::optional<certified_source> perturb;  ///< test hook: which computation to perturb
@@ -140,8 +140,8 @@ int agreement_digits(const Ref& a, const Ref& b, const Ref& scale, int cap) {
   return static_cast<int>(d);
 }
 
-/// Default reference precision: working + max(5, working/10) decimal digits.
-constexpr int reference_extra_digits(int working) { return working / 10 > 5 ? working / 10 : 5; }
+/// Default reference precision: working + max(5, working/20) decimal digits.
+constexpr int reference_extra_digits(int working) { return working / 20 > 5 ? working / 20 : 5; }
 template <class Real>
 int reference_digits() {
   const int working = decimal_digits<Real>();

@@ -118,7 +118,7 @@ class taylor_impact_solver {
 
   impact_result<Real> solve() {
     using std::abs;
-    es end_sys(m_c, taylor_order(m_tol));
+    es end_sys(m_c, taylor_order(m_tol), m_tol);
     ts time_sys(m_c, taylor_order(m_tol), m_tol);
     taylor_integrator<Real, es> end_int(end_sys, m_tol);
     taylor_integrator<Real, ts> time_int(time_sys, m_tol);

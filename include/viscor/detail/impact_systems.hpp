@@ -38,6 +38,7 @@
 #pragma once
 
 #include <viscor/detail/taylor_series.hpp>
+#include <viscor/detail/taylor_tail.hpp>
 #include <viscor/taylor_integrator.hpp>
 
 #include <algorithm>
@@ -63,27 +64,6 @@ struct impact_constants {
   long Q = 1, Q_alpha = 1, Q_beta = 1;
 };
 
-/// The arithmetic of the high orders of a time_system jet (void: Real itself).
-/// NOTE: a Taylor coefficient of order k enters the step as |x[k] h^k| ~ e^(-2k) of
-/// the state (Jorba-Zou step), so past order k_t ~ (digits of Real - 16) ln(10)/2 its
-/// relative accuracy need not exceed double's. For float128 that is the top 13 of 40
-/// orders, about half of the products of a jet, done in hardware instead of in
-/// software (libgcc's soft-float): a Kuwabara-Kono solve takes 1.9 ms instead of 2.4
-/// (gamma = 0.05, g = 1). taylor_integrator caps the step so that the orders computed
-/// in double contribute less than the tolerance (tail_log_bound; tested against
-/// 50-digit jets in taylor_tail_test). MPFR types keep their own arithmetic for now:
-/// double would take a smaller share of their orders (a third at 50 digits).
-template <class Real>
-struct taylor_tail {
-  using type = void;
-};
-#if VISCOR_HAS_FLOAT128
-template <>
-struct taylor_tail<quad> {
-  using type = double;
-};
-#endif
-
 /// Pointers to the series of one time_system jet in arithmetic T, with its scratch.
 template <class T>
 struct time_series {
@@ -94,7 +74,7 @@ struct time_series {
 
 /// Orders k_begin + 1 .. k_end of a time_system jet in arithmetic T, from orders
 /// 0 .. k_begin. Scaled: the series are in h' = h / H (coefficient k times H^k),
-/// i.e. the system's right-hand sides times H (see time_system::tail).
+/// i.e. the system's right-hand sides times H (detail/taylor_tail.hpp).
 template <class T, bool Scaled>
 void time_orders(time_series<T>& s, const impact_constants<T>& c, std::size_t k_begin, std::size_t k_end,
                  const T& H) {
@@ -143,10 +123,9 @@ class time_system {
 
   time_system(const impact_constants<Real>& c, std::size_t order, const Real& tolerance)
       : m_c(c), m_A(order + 2), m_P(order + 2), m_dP(order + 2), m_ju(order + 2),
-        m_inv(integer_reciprocals<Real>(order + 1)) {
+        m_inv(integer_reciprocals<Real>(order + 1)), m_plan(order, tolerance) {
     m_series.P = m_P.data(), m_series.dP = m_dP.data(), m_series.ju = m_ju.data(), m_series.inv = &m_inv;
-    m_tail_start = order + 1;
-    if constexpr (!std::is_void_v<tail_type>) init_tail(order, tolerance);
+    if (m_plan.split() < order) init_tail(order);
   }
 
   std::size_t size() const { return 3; }
@@ -163,7 +142,7 @@ class time_system {
   /// First order computed in double by the last jet (order + 1: none), and ln of
   /// the bound on |x_i[k] h^k| / s_i for those orders (taylor_integrator::step_size).
   std::size_t tail_start() const { return m_last_tail_start; }
-  double tail_log_bound() const { return m_tail_log_bound; }
+  double tail_log_bound() const { return m_plan.log_bound(); }
 
   void jet(const Real& /*tau0*/, taylor_jet<Real>& x) {
     using std::pow;
@@ -177,18 +156,9 @@ class time_system {
     s.inv_u0 /= U[0];
     s.P[0] = m_c.beta_is_one ? U[0] : Real(pow(U[0], m_c.beta));
     if (!m_c.alpha_equals_beta) s.A[0] = pow(U[0], m_c.alpha);
-    const std::size_t split = std::min(m_tail_start, p);
-    time_orders<Real, false>(s, m_c, 0, split, Real(1));
-    m_last_tail_start = p + 1;
-    if constexpr (!std::is_void_v<tail_type>) {
-      if (split < p) {
-        if (tail(s, split, p)) {
-          m_last_tail_start = split + 1;
-        } else {
-          time_orders<Real, false>(s, m_c, split, p, Real(1));
-        }
-      }
-    }
+    m_last_tail_start = m_plan.run(
+        p, [&](std::size_t from, std::size_t to) { time_orders<Real, false>(s, m_c, from, to, Real(1)); },
+        [&](auto split) { return tail(s, split, p); });
     set_scales(U[0], x[v][0], s.A[0], x[D][0]);
     if (m_c.alpha_is_one) {
       m_omega2 = 1;
@@ -225,22 +195,11 @@ class time_system {
     m_scale[D] = abs(D0);
   }
 
-  using tail_type = typename taylor_tail<Real>::type;
-  using tail_arithmetic = std::conditional_t<std::is_void_v<tail_type>, double, tail_type>;
+  using plan = tail_plan<Real>;
+  using tail_arithmetic = typename plan::arithmetic;
 
-  // The orders from which double suffices: |x[k] h^k| ~ e^(-2k) s at the Jorba-Zou
-  // step, and a coefficient computed in double is off by ~ 4 p eps_d of itself
-  // (k-term sums, one rounding each, inputs rounded to double); over the ~p/2 tail
-  // orders that stays below tol/4 if |x[k] h^k| <= B s, B = tol / (8 p^2 eps_d).
-  void init_tail(std::size_t order, const Real& tolerance) {
-    const double p = static_cast<double>(order);
-    const double eps_d = std::numeric_limits<tail_arithmetic>::epsilon();
-    m_tail_log_bound = log_abs(tolerance) - std::log(8 * p * p * eps_d);
-    const double start = std::ceil(-m_tail_log_bound / 2) + 1;
-    if (start < 2 || start + 2 > p) return;
-    m_tail_start = static_cast<std::size_t>(start);
-    const std::size_t n = order + 2;
-    for (auto* a : {&m_tU, &m_tV, &m_tE, &m_tA, &m_tP, &m_tdP, &m_tju}) a->assign(n, 0);
+  void init_tail(std::size_t order) {
+    for (auto* a : {&m_tU, &m_tV, &m_tE, &m_tA, &m_tP, &m_tdP, &m_tju}) a->assign(order + 2, 0);
     m_tinv = integer_reciprocals<tail_arithmetic>(order + 1);
     auto& t = m_tail_c;
     t.gamma = static_cast<tail_arithmetic>(m_c.gamma);
@@ -252,43 +211,24 @@ class time_system {
     t.beta_is_one = m_c.beta_is_one;
   }
 
-  // Orders split + 1 .. p of s in double, in the time variable h' = h / H with H = 2^m
-  // near the radius of convergence (coefficients ~ 1, inside double's exponent range
-  // whatever Real's). False (nothing changed) when a needed value leaves that range.
+  // Orders split + 1 .. p of s in the tail arithmetic; false (nothing changed) when a
+  // needed value leaves its range.
   bool tail(time_series<Real>& s, std::size_t split, std::size_t p) {
-    using std::ldexp;
-    // ln of the inverse radius from the last two Real orders of u and v
-    double l = -std::numeric_limits<double>::infinity();
-    for (const Real* c : {s.U, s.V}) {
-      const double log_scale = std::max(0.0, log_abs(c[0]));
-      for (std::size_t k = split - 1; k <= split; ++k)
-        if (c[k] != 0) l = std::max(l, (log_abs(c[k]) - log_scale) / static_cast<double>(k));
-    }
-    const int m = std::isfinite(l) ? static_cast<int>(std::lround(-l / std::log(2.0))) : 0;
-    // Convert orders 0 .. split (A, dP: 0 .. split - 1), coefficient k times H^k.
-    auto down = [&](const Real* from, tail_arithmetic* to, std::size_t last, int shift) {
-      for (std::size_t k = 0; k <= last; ++k) {
-        to[k] = static_cast<tail_arithmetic>(ldexp(from[k], static_cast<int>(k) * m + shift));
-        if (!std::isfinite(to[k])) return false;
-      }
-      return true;
-    };
-    const bool in_range = down(s.U, m_tU.data(), split, 0) && down(s.V, m_tV.data(), split, 0) &&
-                          down(s.E, m_tE.data(), split, 0) && down(s.P, m_tP.data(), split, 0) &&
-                          down(s.ju, m_tju.data(), split, 0) && down(s.A, m_tA.data(), split - 1, 0) &&
-                          down(s.dP, m_tdP.data(), split - 1, m);
+    const int m = m_plan.scale_exponent({s.U, s.V});
+    // orders 0 .. split (A, dP: 0 .. split - 1); dP[k] is order k of (u^beta)', times H^(k+1)
+    const bool in_range = plan::down(s.U, m_tU.data(), split, m) && plan::down(s.V, m_tV.data(), split, m) &&
+                          plan::down(s.E, m_tE.data(), split, m) && plan::down(s.P, m_tP.data(), split, m) &&
+                          plan::down(s.ju, m_tju.data(), split, m) && plan::down(s.A, m_tA.data(), split - 1, m) &&
+                          plan::down(s.dP, m_tdP.data(), split - 1, m, m);
     const tail_arithmetic u0 = m_tU[0];
     if (!in_range || !std::isnormal(u0) || !std::isnormal(m_tP[0]) || !std::isnormal(m_tA[0])) return false;
     time_series<tail_arithmetic> t{m_tU.data(), m_tV.data(), m_tE.data(), m_tA.data(), m_tP.data(), m_tdP.data(),
                                    m_tju.data(), &m_tinv, 1 / u0, 0, 0};
     if (m_c.alpha_equals_beta) t.A = t.P;
-    time_orders<tail_arithmetic, true>(t, m_tail_c, split, p, std::ldexp(1.0, m));
-    for (std::size_t k = split + 1; k <= p; ++k) {
-      const int shift = -static_cast<int>(k) * m;
-      s.U[k] = ldexp(Real(m_tU[k]), shift);
-      s.V[k] = ldexp(Real(m_tV[k]), shift);
-      s.E[k] = ldexp(Real(m_tE[k]), shift);
-    }
+    time_orders<tail_arithmetic, true>(t, m_tail_c, split, p, std::ldexp(tail_arithmetic(1), m));
+    plan::up(m_tU.data(), s.U, split + 1, p, m);
+    plan::up(m_tV.data(), s.V, split + 1, p, m);
+    plan::up(m_tE.data(), s.E, split + 1, p, m);
     return true;
   }
 
@@ -297,23 +237,71 @@ class time_system {
   time_series<Real> m_series{};  // the jet's series; its scratch numbers are kept from jet to jet
   Real m_scratch, m_t, m_omega2;
   Real m_scale[3];
-  std::size_t m_tail_start = 0, m_last_tail_start = 0;
-  double m_tail_log_bound = 0;
+  plan m_plan;
+  std::size_t m_last_tail_start = 0;
   std::vector<tail_arithmetic> m_tU, m_tV, m_tE, m_tA, m_tP, m_tdP, m_tju, m_tinv;
   impact_constants<tail_arithmetic> m_tail_c;
 };
+
+/// Pointers to the series of one endpoint_system jet in arithmetic T: the states,
+/// 1/v, the known series J, M, L with their degrees, and scratch.
+template <class T>
+struct endpoint_series {
+  T *V, *Tau, *E, *r;
+  const T *J, *M, *L;
+  std::size_t deg_J, deg_M, deg_L;
+  const std::vector<T>* inv;
+  T gamma_beta, two_gamma_beta, t;
+};
+
+/// Orders k_begin + 1 .. k_end of an endpoint_system jet in arithmetic T (Scaled: in
+/// sigma / H, see time_orders), from orders 0 .. k_begin (r: 0 .. k_begin - 1).
+template <class T, bool Scaled>
+void endpoint_orders(endpoint_series<T>& s, std::size_t k_begin, std::size_t k_end, const T& H) {
+  T *V = s.V, *Tau = s.Tau, *E = s.E, *r = s.r;
+  const std::vector<T>& inv = *s.inv;
+  for (std::size_t k = k_begin; k < k_end; ++k) {
+    if (k > 0) reciprocal(r[k], V, r, k);
+    const std::size_t lo_J = k > s.deg_J ? k - s.deg_J : 0;
+    const std::size_t lo_M = k > s.deg_M ? k - s.deg_M : 0;
+    // sum over j of J[k-j] r[j] with k - j <= deg J
+    convolution(Tau[k + 1], r, s.J, k, lo_J, k);
+    if constexpr (Scaled) Tau[k + 1] *= H;
+    divide_by(Tau[k + 1], k + 1, inv);
+    convolution(V[k + 1], r, s.M, k, lo_M, k);
+    if (k <= s.deg_L) {
+      s.t = s.L[k];
+      s.t *= s.gamma_beta;
+      V[k + 1] -= s.t;
+    }
+    if constexpr (Scaled) V[k + 1] *= H;
+    divide_by(V[k + 1], k + 1, inv);
+    const std::size_t lo_L = k > s.deg_L ? k - s.deg_L : 0;
+    convolution(E[k + 1], V, s.L, k, lo_L, k);
+    E[k + 1] *= s.two_gamma_beta;
+    if constexpr (Scaled) E[k + 1] *= H;
+    divide_by(E[k + 1], k + 1, inv);
+  }
+}
 
 template <class Real>
 class endpoint_system {
  public:
   enum : std::size_t { v = 0, tau = 1, D = 2 };
 
-  endpoint_system(const impact_constants<Real>& c, std::size_t order)
+  endpoint_system(const impact_constants<Real>& c, std::size_t order, const Real& tolerance)
       : m_c(c), m_order(order), m_J(order + 2), m_M(order + 2), m_L(order + 2), m_r(order + 2), m_tmp(order + 2),
-        m_inv(integer_reciprocals<Real>(order + 1)) {
+        m_inv(integer_reciprocals<Real>(order + 1)), m_plan(order, tolerance) {
     if (!c.use_root_variable) {
       m_lambda_alpha = c.alpha_plus_one;
       m_lambda_beta = c.beta;
+    }
+    auto& s = m_series;
+    s.r = m_r.data(), s.J = m_J.data(), s.M = m_M.data(), s.L = m_L.data(), s.inv = &m_inv;
+    s.gamma_beta = c.gamma_beta, s.two_gamma_beta = c.two_gamma_beta;
+    if (m_plan.split() < order) {
+      for (auto* a : {&m_tV, &m_tTau, &m_tE, &m_tr, &m_tJ, &m_tM, &m_tL}) a->assign(order + 2, 0);
+      m_tinv = integer_reciprocals<tail_arithmetic>(order + 1);
     }
   }
 
@@ -326,34 +314,21 @@ class endpoint_system {
     return abs(x0);
   }
 
+  /// As time_system::tail_start and tail_log_bound.
+  std::size_t tail_start() const { return m_last_tail_start; }
+  double tail_log_bound() const { return m_plan.log_bound(); }
+
   void jet(const Real& sigma0, taylor_jet<Real>& x) {
     const std::size_t p = x.order();
     fill_known_series(sigma0, p);
-    Real* V = x[v];
-    Real* T = x[tau];
-    Real* E = x[D];
-    Real* r = m_r.data();
-    r[0] = 1;
-    r[0] /= V[0];
-    for (std::size_t k = 0; k < p; ++k) {
-      if (k > 0) reciprocal(r[k], V, r, k);
-      const std::size_t lo_J = k > m_deg_J ? k - m_deg_J : 0;
-      const std::size_t lo_M = k > m_deg_M ? k - m_deg_M : 0;
-      // sum over j of J[k-j] r[j] with k - j <= deg J
-      convolution(T[k + 1], r, m_J.data(), k, lo_J, k);
-      divide_by(T[k + 1], k + 1, m_inv);
-      convolution(V[k + 1], r, m_M.data(), k, lo_M, k);
-      if (k <= m_deg_L) {
-        m_t = m_L[k];
-        m_t *= m_c.gamma_beta;
-        V[k + 1] -= m_t;
-      }
-      divide_by(V[k + 1], k + 1, m_inv);
-      const std::size_t lo_L = k > m_deg_L ? k - m_deg_L : 0;
-      convolution(E[k + 1], V, m_L.data(), k, lo_L, k);
-      E[k + 1] *= m_c.two_gamma_beta;
-      divide_by(E[k + 1], k + 1, m_inv);
-    }
+    auto& s = m_series;
+    s.V = x[v], s.Tau = x[tau], s.E = x[D];
+    s.deg_J = m_deg_J, s.deg_M = m_deg_M, s.deg_L = m_deg_L;
+    s.r[0] = 1;
+    s.r[0] /= s.V[0];
+    m_last_tail_start = m_plan.run(
+        p, [&](std::size_t from, std::size_t to) { endpoint_orders<Real, false>(s, from, to, Real(1)); },
+        [&](auto split) { return tail(s, split, p); });
   }
 
   /// u at sigma.
@@ -403,11 +378,38 @@ class endpoint_system {
     m_deg_L = std::min(m_deg_L, p);
   }
 
+  using plan = tail_plan<Real>;
+  using tail_arithmetic = typename plan::arithmetic;
+
+  // As time_system::tail. r is known to order split - 1 only.
+  bool tail(endpoint_series<Real>& s, std::size_t split, std::size_t p) {
+    const int m = m_plan.scale_exponent({s.V, s.Tau});
+    const bool in_range = plan::down(s.V, m_tV.data(), split, m) && plan::down(s.Tau, m_tTau.data(), split, m) &&
+                          plan::down(s.E, m_tE.data(), split, m) && plan::down(s.r, m_tr.data(), split - 1, m) &&
+                          plan::down(s.J, m_tJ.data(), std::min(s.deg_J, p), m) &&
+                          plan::down(s.M, m_tM.data(), std::min(s.deg_M, p), m) &&
+                          plan::down(s.L, m_tL.data(), std::min(s.deg_L, p), m);
+    if (!in_range || !std::isnormal(m_tV[0])) return false;
+    endpoint_series<tail_arithmetic> t{m_tV.data(), m_tTau.data(), m_tE.data(), m_tr.data(), m_tJ.data(),
+                                       m_tM.data(), m_tL.data(), s.deg_J, s.deg_M, s.deg_L, &m_tinv,
+                                       static_cast<tail_arithmetic>(s.gamma_beta),
+                                       static_cast<tail_arithmetic>(s.two_gamma_beta), 0};
+    endpoint_orders<tail_arithmetic, true>(t, split, p, std::ldexp(tail_arithmetic(1), m));
+    plan::up(m_tV.data(), s.V, split + 1, p, m);
+    plan::up(m_tTau.data(), s.Tau, split + 1, p, m);
+    plan::up(m_tE.data(), s.E, split + 1, p, m);
+    return true;
+  }
+
   const impact_constants<Real>& m_c;
   std::size_t m_order;
   std::vector<Real> m_J, m_M, m_L, m_r, m_tmp, m_powers, m_inv;
   std::size_t m_deg_J = 0, m_deg_M = 0, m_deg_L = 0;
   Real m_lambda_alpha, m_lambda_beta, m_t;
+  endpoint_series<Real> m_series{};
+  plan m_plan;
+  std::size_t m_last_tail_start = 0;
+  std::vector<tail_arithmetic> m_tV, m_tTau, m_tE, m_tr, m_tJ, m_tM, m_tL, m_tinv;
 };
 
 template <class Real>
