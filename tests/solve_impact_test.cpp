@@ -293,11 +293,6 @@ TEST(SolveImpact, RejectsInvalidInput) {
   solve_options<double> options;
   options.tolerance = -1;
   EXPECT_THROW(solve_impact<double>(kk, 0.1, 0.0, options), invalid_parameter);
-#if !__has_include(<viscor/adaptive_impact.hpp>)
-  options = {};
-  options.method = integration_method::adaptive;
-  EXPECT_THROW(solve_impact<double>(kk, 0.1, 0.0, options), invalid_parameter);
-#endif
 }
 
 TEST(SolveImpact, StepBudgetRaisesTypedError) {

@@ -73,6 +73,11 @@ struct gbs_work<long double> {
 // mpfr_mul 14 ns at 188-192 bits, 20 ns at 220-256, 29 ns at 330-384, 34 ns at 406),
 // so the work precision is rounded up to whole limbs: those guard digits are free,
 // and a guard that spills into one more limb costs 20-40% of the whole solve.
+// Except below three limbs' worth: MPFR has special products up to 127 bits and up
+// to 187, at 7-8 ns (mpfr_mul, 168 and 184 bits); 188-192 bits take the generic
+// 14 ns. So mpfr_50's 57-digit (191-bit) work type runs at half the speed of a
+// 55-digit one, but 55 digits are short of the guard GBS needs at 50 (measured:
+// 1 - e to 47.9 digits at g = 10 instead of 50.5), hence not used.
 // Decimal digits of the widest Boost mpfr precision in as many limbs as `digits10`.
 constexpr unsigned mpfr_limb_filled_digits(unsigned digits10) {
   using boost::multiprecision::detail::digits10_2_2;
