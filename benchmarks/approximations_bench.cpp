@@ -5,10 +5,10 @@
 // coefficients <= 5 us; with tanh-sinh coefficients <= 50 us. Reproduce with
 //   cmake -S . -B build -DVISCOR_BUILD_BENCHMARKS=ON && cmake --build build --target approximations_bench
 //   ./build/benchmarks/approximations_bench
-#include <viscor/approximations.hpp>
-#include <viscor/exact_solutions.hpp>
-#if __has_include(<viscor/solve_impact.hpp>)
-#include <viscor/solve_impact.hpp>
+#include <viscor/approx/approximations.hpp>
+#include <viscor/exact/exact_solutions.hpp>
+#if __has_include(<viscor/impact/solve_impact.hpp>)
+#include <viscor/impact/solve_impact.hpp>
 #define VISCOR_BENCH_SOLVE_IMPACT 1
 #endif
 

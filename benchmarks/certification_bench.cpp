@@ -4,8 +4,8 @@
 //   cmake -S . -B build -DVISCOR_BUILD_BENCHMARKS=ON && cmake --build build --target certification_bench
 //   ./build/benchmarks/certification_bench
 // and divide the certify time by the taylor time of the same type and point.
-#include <viscor/certification.hpp>
-#include <viscor/solve_impact.hpp>
+#include <viscor/certify/certification.hpp>
+#include <viscor/impact/solve_impact.hpp>
 
 #include <benchmark/benchmark.h>
 

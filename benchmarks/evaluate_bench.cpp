@@ -2,9 +2,9 @@
 // cost per CoR at a stated tolerance, without error maps (so the Taylor solve or
 // certify does the work), for Kuwabara-Kono at the report's steel-bead point.
 // `viscor bench` reports the same trade with accuracies and with error maps.
-#include <viscor/calibration.hpp>
-#include <viscor/evaluate.hpp>
-#include <viscor/extern_templates.hpp>
+#include <viscor/scenes/calibration.hpp>
+#include <viscor/scenes/evaluate.hpp>
+#include <viscor/certify/extern_templates.hpp>
 
 #include <benchmark/benchmark.h>
 

@@ -3,7 +3,7 @@
 //   cmake -S . -B build -DVISCOR_BUILD_BENCHMARKS=ON && cmake --build build --target solve_impact_bench
 //   ./build/benchmarks/solve_impact_bench
 // (the 1000-digit case is opt-in: --benchmark_filter=1000 --benchmark_min_time=1x... see below).
-#include <viscor/solve_impact.hpp>
+#include <viscor/impact/solve_impact.hpp>
 
 #include <benchmark/benchmark.h>
 

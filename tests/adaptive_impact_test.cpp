@@ -1,10 +1,10 @@
 // solve_impact_adaptive against the exact solutions (viscor::exact_cor), which
 // are evaluated at a higher precision than the type under test so that their
 // own rounding (the linear law at g = 1e3 loses ~5 digits) cannot mask errors.
-#include <viscor/adaptive_impact.hpp>
-#include <viscor/exact_hunt_crossley.hpp>
-#include <viscor/exact_solutions.hpp>
-#include <viscor/solve_impact.hpp>
+#include <viscor/impact/adaptive_impact.hpp>
+#include <viscor/exact/exact_hunt_crossley.hpp>
+#include <viscor/exact/exact_solutions.hpp>
+#include <viscor/impact/solve_impact.hpp>
 
 #include "test_utils.hpp"
 

@@ -1,6 +1,6 @@
 // The GBS integrator alone, on ODEs with known solutions, at double and at 50
 // and 100 digits (integrating in detail::gbs_work<Real>, as solve_impact_adaptive does).
-#include <viscor/adaptive_integrator.hpp>
+#include <viscor/ode/adaptive_integrator.hpp>
 
 #include "test_utils.hpp"
 

@@ -7,8 +7,8 @@
 // the committed text character by character.
 #include "test_utils.hpp"
 
-#include <viscor/approximation_errors.hpp>
-#include <viscor/table_row.hpp>
+#include <viscor/tables/approximation_errors.hpp>
+#include <viscor/tables/table_row.hpp>
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
 // The approximate CoR formulas of approximations.hpp against exact solutions
 // (exact_solutions.hpp: linear law at any g, Hunt-Crossley form and Tsuji at g = 0),
 // against their own defining expansions, and input validation.
-#include <viscor/approximations.hpp>
-#include <viscor/exact_solutions.hpp>
+#include <viscor/approx/approximations.hpp>
+#include <viscor/exact/exact_solutions.hpp>
 
 #include "test_utils.hpp"
 

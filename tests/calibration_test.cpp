@@ -3,9 +3,9 @@
 // e in gamma (which the bracketing relies on), and the unreachable targets.
 #include "test_utils.hpp"
 
-#include <viscor/calibration.hpp>
-#include <viscor/exact_solutions.hpp>
-#include <viscor/extern_templates.hpp>
+#include <viscor/scenes/calibration.hpp>
+#include <viscor/exact/exact_solutions.hpp>
+#include <viscor/certify/extern_templates.hpp>
 
 #include <boost/math/constants/constants.hpp>
 

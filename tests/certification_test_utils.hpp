@@ -3,9 +3,9 @@
 // truth) and the random parameter sample.
 #pragma once
 
-#include <viscor/certification.hpp>
-#include <viscor/exact_solutions.hpp>
-#include <viscor/taylor_impact.hpp>
+#include <viscor/certify/certification.hpp>
+#include <viscor/exact/exact_solutions.hpp>
+#include <viscor/impact/taylor_impact.hpp>
 
 #include <gtest/gtest.h>
 

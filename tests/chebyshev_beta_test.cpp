@@ -1,9 +1,9 @@
 // theta(g), relation (48) and the Chebyshev-Beta approximation (49)-(53) of
 // chebyshev_beta.hpp, against the independent quadrature of eq. (91) and the
 // Beta closed forms (96).
-#include <viscor/chebyshev_beta.hpp>
-#include <viscor/closed_form.hpp>
-#include <viscor/integrals.hpp>
+#include <viscor/approx/chebyshev_beta.hpp>
+#include <viscor/approx/closed_form.hpp>
+#include <viscor/approx/integrals.hpp>
 
 #include "test_utils.hpp"
 

@@ -1,6 +1,6 @@
 // viscor approx (src/cli/cmd_approx.cpp): output forms, values against the library,
 // and errors. Skipped when the CLI is not built.
-#include <viscor/approximations.hpp>
+#include <viscor/approx/approximations.hpp>
 
 #include "test_utils.hpp"
 

@@ -1,7 +1,7 @@
 // viscor cor (src/cli/cmd_cor.cpp): e as printed against the exact linear
 // solution, at double and at 210 digits (issue 3: "stick" there), and errors
 // for bad input. Skipped when the CLI is not built.
-#include <viscor/exact_solutions.hpp>
+#include <viscor/exact/exact_solutions.hpp>
 
 #include "test_utils.hpp"
 

@@ -7,8 +7,8 @@
 // from the Beta-function formulas, and for I(0), Q(0) checked there against mpmath's
 // own quadrature of the defining integrals (agreement to 66+ digits), e.g.
 //   C0 = b ((a+1)/2)^((b-a-1)/(a+1)) beta(b/(a+1), 3/2),  a = b = 3/2.
-#include <viscor/closed_form.hpp>
-#include <viscor/integrals.hpp>
+#include <viscor/approx/closed_form.hpp>
+#include <viscor/approx/integrals.hpp>
 
 #include "test_utils.hpp"
 

@@ -7,10 +7,10 @@
 //    digits (not from the tables the maps came from).
 #include "test_utils.hpp"
 
-#include <viscor/error_map.hpp>
-#include <viscor/extern_templates.hpp>
-#include <viscor/precision.hpp>
-#include <viscor/solve_impact.hpp>
+#include <viscor/scenes/error_map.hpp>
+#include <viscor/certify/extern_templates.hpp>
+#include <viscor/core/precision.hpp>
+#include <viscor/impact/solve_impact.hpp>
 
 #include <fstream>
 #include <random>

@@ -3,9 +3,9 @@
 // samples (linear law: references from the closed form, independent of solve_impact).
 #include "test_utils.hpp"
 
-#include <viscor/error_map_builder.hpp>
-#include <viscor/exact_solutions.hpp>
-#include <viscor/extern_templates.hpp>
+#include <viscor/scenes/error_map_builder.hpp>
+#include <viscor/exact/exact_solutions.hpp>
+#include <viscor/certify/extern_templates.hpp>
 
 #include <random>
 #include <string>

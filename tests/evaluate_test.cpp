@@ -4,7 +4,7 @@
 // relative bounds on 1 - e, and input validation.
 #include "evaluate_test_utils.hpp"
 
-#include <viscor/exact_solutions.hpp>
+#include <viscor/exact/exact_solutions.hpp>
 
 namespace viscor {
 namespace {

@@ -5,9 +5,9 @@
 
 #include "test_utils.hpp"
 
-#include <viscor/error_map_builder.hpp>
-#include <viscor/evaluate.hpp>
-#include <viscor/extern_templates.hpp>
+#include <viscor/scenes/error_map_builder.hpp>
+#include <viscor/scenes/evaluate.hpp>
+#include <viscor/certify/extern_templates.hpp>
 
 #include <cmath>
 #include <map>

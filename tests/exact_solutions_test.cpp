@@ -7,7 +7,7 @@
 // - Tsuji: the Antypov-Elliott calibration written the other way round.
 #include "test_utils.hpp"
 
-#include <viscor/exact_solutions.hpp>
+#include <viscor/exact/exact_solutions.hpp>
 
 #include <boost/math/constants/constants.hpp>
 #include <boost/math/quadrature/tanh_sinh.hpp>

@@ -1,10 +1,10 @@
 // u_M(g) and the integrals I(g), Q(g), dI/dg(g) of integrals.hpp, checked against
 // exact solutions (alpha = 1; g = 0 Beta closed forms) and against the independent
 // quadrature of the theta form (I = K J, Q = L M).
-#include <viscor/chebyshev_beta.hpp>
-#include <viscor/closed_form.hpp>
-#include <viscor/integrals.hpp>
-#include <viscor/u_max.hpp>
+#include <viscor/approx/chebyshev_beta.hpp>
+#include <viscor/approx/closed_form.hpp>
+#include <viscor/approx/integrals.hpp>
+#include <viscor/approx/u_max.hpp>
 
 #include "test_utils.hpp"
 

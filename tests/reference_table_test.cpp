@@ -4,12 +4,12 @@
 // g = 0, where the thresholds follow from independently derived equations).
 #include "test_utils.hpp"
 
-#include <viscor/detail/exact_decimal.hpp>
-#include <viscor/exact_solutions.hpp>
-#include <viscor/grid_spec.hpp>
-#include <viscor/reference_table.hpp>
-#include <viscor/sticking_threshold.hpp>
-#include <viscor/table_row.hpp>
+#include <viscor/core/detail/exact_decimal.hpp>
+#include <viscor/exact/exact_solutions.hpp>
+#include <viscor/tables/grid_spec.hpp>
+#include <viscor/tables/reference_table.hpp>
+#include <viscor/tables/sticking_threshold.hpp>
+#include <viscor/tables/table_row.hpp>
 
 #include <boost/math/constants/constants.hpp>
 #include <boost/math/tools/roots.hpp>

@@ -1,7 +1,7 @@
 // Scaling of eq. (2): round trips, and the report's worked numbers.
 #include "test_utils.hpp"
 
-#include <viscor/scaling.hpp>
+#include <viscor/core/scaling.hpp>
 
 namespace viscor::test {
 namespace {

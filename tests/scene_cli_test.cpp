@@ -3,10 +3,10 @@
 // code 2, no output file), and error maps used by a scene.
 #include "test_utils.hpp"
 
-#include <viscor/extern_templates.hpp>
-#include <viscor/precision.hpp>
-#include <viscor/real_io.hpp>
-#include <viscor/solve_impact.hpp>
+#include <viscor/certify/extern_templates.hpp>
+#include <viscor/core/precision.hpp>
+#include <viscor/core/real_io.hpp>
+#include <viscor/impact/solve_impact.hpp>
 
 #include <nlohmann/json.hpp>
 

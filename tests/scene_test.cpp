@@ -3,9 +3,9 @@
 // and rows in physical units.
 #include "test_utils.hpp"
 
-#include <viscor/exact_solutions.hpp>
-#include <viscor/extern_templates.hpp>
-#include <viscor/scene.hpp>
+#include <viscor/exact/exact_solutions.hpp>
+#include <viscor/certify/extern_templates.hpp>
+#include <viscor/scenes/scene.hpp>
 
 #include <string>
 

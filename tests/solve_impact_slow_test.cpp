@@ -1,8 +1,8 @@
 // Heavy checks of solve_impact (label "slow"): 1000 digits against an exact
 // solution, the full precision-escalation grid of issue 3, and wide sweeps of
 // laws and loads at 50 and 100 digits.
-#include <viscor/exact_solutions.hpp>
-#include <viscor/solve_impact.hpp>
+#include <viscor/exact/exact_solutions.hpp>
+#include <viscor/impact/solve_impact.hpp>
 
 #include <gtest/gtest.h>
 

@@ -1,10 +1,10 @@
 // solve_impact (Taylor method) against the exact solutions, at every scalar type:
 // e and 1 - e (relative) to the working precision minus 3 digits (double: 1e-14
 // absolute on e), plus the limits and outcomes the issue asks for.
-#include <viscor/exact_linear.hpp>
-#include <viscor/exact_solutions.hpp>
-#include <viscor/precision.hpp>
-#include <viscor/solve_impact.hpp>
+#include <viscor/exact/exact_linear.hpp>
+#include <viscor/exact/exact_solutions.hpp>
+#include <viscor/core/precision.hpp>
+#include <viscor/impact/solve_impact.hpp>
 
 #include <boost/math/special_functions/beta.hpp>
 

@@ -5,10 +5,10 @@
 // quantity of the report's figures, stays what docs/report_tables.md states.
 #include "test_utils.hpp"
 
-#include <viscor/closed_form.hpp>
-#include <viscor/extern_templates.hpp>
-#include <viscor/reference_table.hpp>
-#include <viscor/solve_impact.hpp>
+#include <viscor/approx/closed_form.hpp>
+#include <viscor/certify/extern_templates.hpp>
+#include <viscor/tables/reference_table.hpp>
+#include <viscor/impact/solve_impact.hpp>
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
 // Taylor-series recurrences (detail/taylor_series.hpp) against series known in
 // closed form, and the Taylor integrator on an exactly solvable ODE.
-#include <viscor/detail/taylor_series.hpp>
-#include <viscor/taylor_integrator.hpp>
+#include <viscor/ode/detail/taylor_series.hpp>
+#include <viscor/ode/taylor_integrator.hpp>
 
 #include <boost/math/special_functions/binomial.hpp>
 #include <boost/math/special_functions/factorials.hpp>

@@ -2,9 +2,9 @@
 // orders computed in double must change the step polynomial by less than a quarter
 // of the tolerance at the step the integrator takes. Reference: the same jet
 // computed entirely at 50 digits (mpfr_50 has no tail), from the same state.
-#include <viscor/contact_law.hpp>
-#include <viscor/detail/impact_systems.hpp>
-#include <viscor/taylor_integrator.hpp>
+#include <viscor/core/contact_law.hpp>
+#include <viscor/impact/detail/impact_systems.hpp>
+#include <viscor/ode/taylor_integrator.hpp>
 
 #include <gtest/gtest.h>
 

@@ -2,8 +2,8 @@
 // in the type itself (EXPECT_NEAR would narrow long double, float128 and MPFR to double).
 #pragma once
 
-#include <viscor/real_io.hpp>
-#include <viscor/real_types.hpp>
+#include <viscor/core/real_io.hpp>
+#include <viscor/core/real_types.hpp>
 
 #include <gtest/gtest.h>
 

@@ -6,8 +6,8 @@
 // Build and run (from the repository root, after configuring build-dir):
 //   g++ -std=gnu++20 -O2 -Iinclude -I<build-dir>/include tools/chebyshev_order.cpp \
 //       -o chebyshev_order -lmpfr -lgmp -lquadmath && ./chebyshev_order
-#include <viscor/chebyshev_beta.hpp>
-#include <viscor/integrals.hpp>
+#include <viscor/approx/chebyshev_beta.hpp>
+#include <viscor/approx/integrals.hpp>
 
 #include <cstdio>
 #include <vector>

@@ -4,7 +4,7 @@
 # supplies the cell corners, the other CoR tables add samples inside the cells.
 # Usage: tools/generate_error_maps.sh [path/to/viscor]
 # Cells: gamma in 1-2-5 steps from 1e-6 to 1, g = 0, then decades 1e-4..10.
-# Safety factor 4 and floor 1e-14: see include/viscor/error_map_builder.hpp.
+# Safety factor 4 and floor 1e-14: see include/viscor/scenes/error_map_builder.hpp.
 set -euo pipefail
 viscor=${1:-build/viscor}
 cd "$(dirname "$0")/.."

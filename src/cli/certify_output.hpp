@@ -6,7 +6,7 @@
 
 #include "cli_common.hpp"
 
-#include <viscor/certification.hpp>
+#include <viscor/certify/certification.hpp>
 
 #include <boost/math/special_functions/fpclassify.hpp>
 

@@ -3,10 +3,10 @@
 // field names match the API, numbers as full-precision decimal strings).
 #pragma once
 
-#include <viscor/contact_law.hpp>
-#include <viscor/exceptions.hpp>
-#include <viscor/precision.hpp>
-#include <viscor/real_io.hpp>
+#include <viscor/core/contact_law.hpp>
+#include <viscor/core/exceptions.hpp>
+#include <viscor/core/precision.hpp>
+#include <viscor/core/real_io.hpp>
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>

@@ -6,7 +6,7 @@
 #include "cli_common.hpp"
 #include "command_registry.hpp"
 
-#include <viscor/approximations.hpp>
+#include <viscor/approx/approximations.hpp>
 
 #include <array>
 #include <iomanip>

@@ -13,9 +13,9 @@
 #include "cli_common.hpp"
 #include "command_registry.hpp"
 
-#include <viscor/error_map.hpp>
-#include <viscor/evaluate.hpp>
-#include <viscor/reference_table.hpp>
+#include <viscor/scenes/error_map.hpp>
+#include <viscor/scenes/evaluate.hpp>
+#include <viscor/tables/reference_table.hpp>
 
 #include <algorithm>
 #include <chrono>

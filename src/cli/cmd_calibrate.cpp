@@ -3,7 +3,7 @@
 #include "cli_common.hpp"
 #include "command_registry.hpp"
 
-#include <viscor/calibration.hpp>
+#include <viscor/scenes/calibration.hpp>
 
 #include <chrono>
 #include <sstream>

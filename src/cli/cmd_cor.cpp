@@ -6,8 +6,8 @@
 #include "cli_common.hpp"
 #include "command_registry.hpp"
 
-#include <viscor/scaling.hpp>
-#include <viscor/solve_impact.hpp>
+#include <viscor/core/scaling.hpp>
+#include <viscor/impact/solve_impact.hpp>
 
 #include <chrono>
 #include <map>

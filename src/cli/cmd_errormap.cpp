@@ -5,8 +5,8 @@
 #include "cli_common.hpp"
 #include "command_registry.hpp"
 
-#include <viscor/error_map_builder.hpp>
-#include <viscor/reference_table.hpp>
+#include <viscor/scenes/error_map_builder.hpp>
+#include <viscor/tables/reference_table.hpp>
 
 #include <chrono>
 #include <ctime>

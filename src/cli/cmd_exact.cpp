@@ -3,7 +3,7 @@
 #include "cli_common.hpp"
 #include "command_registry.hpp"
 
-#include <viscor/exact_solutions.hpp>
+#include <viscor/exact/exact_solutions.hpp>
 
 #include <sstream>
 

@@ -2,7 +2,7 @@
 #include "cli_common.hpp"
 #include "command_registry.hpp"
 
-#include <viscor/scaling.hpp>
+#include <viscor/core/scaling.hpp>
 
 #include <sstream>
 

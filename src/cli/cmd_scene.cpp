@@ -5,8 +5,8 @@
 #include "command_registry.hpp"
 #include "scene_json.hpp"
 
-#include <viscor/error_map.hpp>
-#include <viscor/scene.hpp>
+#include <viscor/scenes/error_map.hpp>
+#include <viscor/scenes/scene.hpp>
 
 #include <chrono>
 #include <cstdio>

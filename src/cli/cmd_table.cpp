@@ -10,10 +10,10 @@
 #include "table_runner.hpp"
 
 #include <viscor/config.hpp>
-#include <viscor/grid_spec.hpp>
-#include <viscor/reference_table.hpp>
-#include <viscor/sticking_threshold.hpp>
-#include <viscor/table_row.hpp>
+#include <viscor/tables/grid_spec.hpp>
+#include <viscor/tables/reference_table.hpp>
+#include <viscor/tables/sticking_threshold.hpp>
+#include <viscor/tables/table_row.hpp>
 
 #include <filesystem>
 #include <map>

@@ -2,7 +2,7 @@
 #include "command_registry.hpp"
 
 #include <viscor/config.hpp>
-#include <viscor/exceptions.hpp>
+#include <viscor/core/exceptions.hpp>
 
 #include <algorithm>
 #include <iostream>

@@ -6,7 +6,7 @@
 #include "cli_common.hpp"
 #include "spec_json.hpp"
 
-#include <viscor/scene.hpp>
+#include <viscor/scenes/scene.hpp>
 
 #include <filesystem>
 #include <fstream>

@@ -10,7 +10,7 @@
 
 #include "cli_common.hpp"
 
-#include <viscor/grid_spec.hpp>
+#include <viscor/tables/grid_spec.hpp>
 
 #include <nlohmann/json.hpp>
 

@@ -10,7 +10,7 @@
 #include "cli_common.hpp"
 
 #include <viscor/config.hpp>
-#include <viscor/reference_table.hpp>
+#include <viscor/tables/reference_table.hpp>
 
 #include <algorithm>
 #include <atomic>

@@ -1,0 +1,104 @@
+// Decimal I/O of Real at full precision: parsing user input exactly (correctly
+// rounded in Real, never through double) and printing round-trip strings.
+#pragma once
+
+#include <viscor/core/exceptions.hpp>
+#include <viscor/core/real_types.hpp>
+
+#include <boost/math/special_functions/fpclassify.hpp>
+
+#include <cctype>
+#include <cstdlib>
+#include <iomanip>
+#include <ios>
+#include <sstream>
+#include <string>
+
+namespace viscor {
+
+/// Significant decimal digits that make a Real round-trip through text.
+template <class Real>
+int roundtrip_digits() {
+  return decimal_digits<Real>() + 2;
+}
+
+/// x in scientific notation with `digits` significant digits (default: round-trip).
+template <class Real>
+std::string to_decimal_string(const Real& x, int digits = 0) {
+  using boost::math::isfinite;
+  using boost::math::isnan;
+  if (!isfinite(x)) return isnan(x) ? "nan" : (x > 0 ? "inf" : "-inf");
+  if (digits <= 0) digits = roundtrip_digits<Real>();
+  std::ostringstream out;
+  out << std::scientific << std::setprecision(digits - 1) << x;
+  return out.str();
+}
+
+namespace detail {
+inline bool looks_like_decimal(const std::string& s) {
+  // [+-]digits[.digits][(e|E)[+-]digits]: what strtod, mpfr and float128 all accept alike.
+  std::size_t i = 0, n = s.size();
+  if (i < n && (s[i] == '+' || s[i] == '-')) ++i;
+  std::size_t mantissa_digits = 0;
+  while (i < n && std::isdigit(static_cast<unsigned char>(s[i]))) ++i, ++mantissa_digits;
+  if (i < n && s[i] == '.') {
+    ++i;
+    while (i < n && std::isdigit(static_cast<unsigned char>(s[i]))) ++i, ++mantissa_digits;
+  }
+  if (mantissa_digits == 0) return false;
+  if (i < n && (s[i] == 'e' || s[i] == 'E')) {
+    ++i;
+    if (i < n && (s[i] == '+' || s[i] == '-')) ++i;
+    std::size_t exponent_digits = 0;
+    while (i < n && std::isdigit(static_cast<unsigned char>(s[i]))) ++i, ++exponent_digits;
+    if (exponent_digits == 0) return false;
+  }
+  return i == n;
+}
+}  // namespace detail
+
+/// Parses a finite decimal number, correctly rounded to Real. `name` is the
+/// parameter named in the error message ("gamma", "g", ...).
+template <class Real>
+Real parse_real(const std::string& text, const std::string& name) {
+  if (!detail::looks_like_decimal(text))
+    throw invalid_parameter("parameter " + name + " must be a finite decimal number, but got '" + text + "'");
+  Real x;
+  if constexpr (std::is_same_v<Real, double>) {
+    x = std::strtod(text.c_str(), nullptr);
+  } else if constexpr (std::is_same_v<Real, long double>) {
+    x = std::strtold(text.c_str(), nullptr);
+  } else {
+    x = Real(text);  // Boost.Multiprecision parses at the type's own precision
+  }
+  using boost::math::isfinite;
+  if (!isfinite(x))
+    throw invalid_parameter("parameter " + name + " = " + text + " overflows the working precision");
+  return x;
+}
+
+/// Sets this thread's default precision of run-time mpfr_float for a scope; a no-op for
+/// every fixed-precision type.
+class scoped_precision {
+ public:
+  explicit scoped_precision(int decimal_digits_wanted) {
+#if VISCOR_HAS_MPFR
+    m_saved = mpfr_real::thread_default_precision();
+    mpfr_real::thread_default_precision(static_cast<unsigned>(decimal_digits_wanted));
+#else
+    (void)decimal_digits_wanted;
+#endif
+  }
+  ~scoped_precision() {
+#if VISCOR_HAS_MPFR
+    mpfr_real::thread_default_precision(m_saved);
+#endif
+  }
+  scoped_precision(const scoped_precision&) = delete;
+  scoped_precision& operator=(const scoped_precision&) = delete;
+
+ private:
+  unsigned m_saved = 0;
+};
+
+}  // namespace viscor

@@ -1,0 +1,94 @@
+// Physical <-> scaled parameters, eq. (2) of the report: with
+//   T = (m/k)^(1/(alpha+1)) v0^((1-alpha)/(alpha+1)),  delta = v0 T,  x = -delta u, t = T tau,
+//   gamma = gamma0 v0^(2 beta/(alpha+1) - 1) (k/m)^(1 - beta/(alpha+1)),
+//   g     = (m/k)^(1/(alpha+1)) v0^(-2 alpha/(alpha+1)) (gravity + F/m).
+#pragma once
+
+#include <viscor/core/contact_law.hpp>
+#include <viscor/core/parameters.hpp>
+
+namespace viscor {
+
+/// Physical impact data in SI units; k has units N/m^alpha, gamma0 s/m^(beta-alpha)...
+/// (whatever makes k gamma0 d/dt(delta^beta) a force).
+template <class Real>
+struct physical_parameters {
+  Real m = 0;        ///< mass, kg, > 0
+  Real k = 0;        ///< contact stiffness, > 0
+  Real gamma0 = 0;   ///< damping coefficient, >= 0
+  Real v0 = 0;       ///< impact speed, m/s, > 0
+  Real gravity = 0;  ///< gravitational acceleration towards the wall, m/s^2
+  Real force = 0;    ///< constant external force F, N; F > 0 presses the bead on the wall
+
+  void validate() const {
+    require_positive(m, "m");
+    require_positive(k, "k");
+    require_non_negative(gamma0, "gamma0");
+    require_positive(v0, "v0");
+    require_finite(gravity, "gravity");
+    require_finite(force, "F");
+  }
+};
+
+/// Scaled parameters with the time and length scales that produced them.
+template <class Real>
+struct scaled_parameters {
+  Real gamma = 0;
+  Real g = 0;
+  Real time_scale = 0;    ///< T: physical time = T * tau
+  Real length_scale = 0;  ///< delta = v0 T: physical overlap = delta * u
+};
+
+namespace detail {
+template <class Real>
+Real time_scale(const contact_law& law, const Real& m, const Real& k, const Real& v0) {
+  using std::pow;
+  const Real alpha = law.alpha.value<Real>();
+  return Real(pow(m / k, 1 / (alpha + 1)) * pow(v0, (1 - alpha) / (alpha + 1)));
+}
+// gamma / gamma0 and g / (gravity + F/m): the two factors of eq. (2).
+template <class Real>
+Real damping_factor(const contact_law& law, const Real& m, const Real& k, const Real& v0) {
+  using std::pow;
+  const Real alpha = law.alpha.value<Real>(), beta = law.beta.value<Real>();
+  return Real(pow(v0, 2 * beta / (alpha + 1) - 1) * pow(k / m, 1 - beta / (alpha + 1)));
+}
+template <class Real>
+Real load_factor(const contact_law& law, const Real& m, const Real& k, const Real& v0) {
+  using std::pow;
+  const Real alpha = law.alpha.value<Real>();
+  return Real(pow(m / k, 1 / (alpha + 1)) * pow(v0, -2 * alpha / (alpha + 1)));
+}
+}  // namespace detail
+
+/// Physical -> scaled (eq. 2).
+template <class Real>
+scaled_parameters<Real> to_scaled(const contact_law& law, const physical_parameters<Real>& p) {
+  law.validate();
+  p.validate();
+  scaled_parameters<Real> s;
+  s.gamma = p.gamma0 * detail::damping_factor(law, p.m, p.k, p.v0);
+  s.g = detail::load_factor(law, p.m, p.k, p.v0) * (p.gravity + p.force / p.m);
+  s.time_scale = detail::time_scale(law, p.m, p.k, p.v0);
+  s.length_scale = p.v0 * s.time_scale;
+  return s;
+}
+
+/// Scaled -> physical: given (gamma, g) and the bead (m, k, v0, gravity), the
+/// damping gamma0 and the external force F that produce them.
+template <class Real>
+physical_parameters<Real> to_physical(const contact_law& law, const Real& gamma, const Real& g, const Real& m,
+                                      const Real& k, const Real& v0, const Real& gravity) {
+  law.validate();
+  require_non_negative(gamma, "gamma");
+  require_finite(g, "g");
+  physical_parameters<Real> p;
+  p.m = m, p.k = k, p.v0 = v0, p.gravity = gravity;
+  p.gamma0 = 0, p.force = 0;
+  p.validate();
+  p.gamma0 = gamma / detail::damping_factor(law, m, k, v0);
+  p.force = m * (g / detail::load_factor(law, m, k, v0) - gravity);
+  return p;
+}
+
+}  // namespace viscor

@@ -1,0 +1,254 @@
+// Adaptive-order Taylor integrator for a small autonomous-or-not system whose
+// Taylor coefficients a `System` computes by automatic differentiation
+// (detail/taylor_series.hpp). Order and step follow Jorba and Zou (2005), as in
+// heyoka (Biscani and Izzo 2021):
+//   order  p = max(2, ceil(-ln(tol)/2 + 1)),
+//   step   h = rho exp(-0.7/(p-1)) / e^2,
+//   rho    = min_i min_{k = p-3..p} (s_i/|x_i[k]|)^(1/k)
+// (Jorba-Zou use k = p-1, p; the wider window also sees sparse series), with
+// the scale s_i chosen by the system: max(1, |x_i[0]|) for dynamic states
+// (absolute error when small, relative when large), |x_i[0]| for quadratures
+// that must keep relative precision, 0 to leave a component out. The order is
+// fixed per integrator, so the series buffers are allocated once. Dense output and event location use the step
+// polynomial itself: an event is the root of a component of it, found by TOMS
+// 748 at working precision (detail/root_finding.hpp).
+//
+// A System provides
+//   std::size_t size() const;                   number of components
+//   Real step_scale(std::size_t i, const Real& x0) const;   s_i (0: not used)
+//   void jet(const Real& t0, taylor_jet<Real>& x); fills x[i][1..order] from x[i][0]
+#pragma once
+
+#include <viscor/core/detail/root_finding.hpp>
+#include <viscor/ode/detail/taylor_series.hpp>
+#include <viscor/core/real_types.hpp>
+
+#include <boost/math/special_functions/fpclassify.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace viscor {
+
+/// Taylor coefficients 0..order (+1 spare) of `size` series, stored contiguously.
+template <class Real>
+class taylor_jet {
+ public:
+  taylor_jet(std::size_t size, std::size_t order)
+      : m_size(size), m_order(order), m_stride(order + 2), m_data(size * (order + 2), Real(0)) {}
+  Real* operator[](std::size_t i) { return m_data.data() + i * m_stride; }
+  const Real* operator[](std::size_t i) const { return m_data.data() + i * m_stride; }
+  std::size_t size() const noexcept { return m_size; }
+  std::size_t order() const noexcept { return m_order; }
+
+ private:
+  std::size_t m_size, m_order, m_stride;
+  std::vector<Real> m_data;
+};
+
+/// The Taylor order for a tolerance (Jorba-Zou): max(2, ceil(-ln(tol)/2 + 1)).
+template <class Real>
+std::size_t taylor_order(const Real& tolerance) {
+  using std::ceil;
+  using std::log;
+  const Real p = ceil(-log(tolerance) / 2 + 1);
+  return p < 2 ? std::size_t(2) : static_cast<std::size_t>(p.template convert_to<long long>());
+}
+template <>
+inline std::size_t taylor_order<double>(const double& tolerance) {
+  const double p = std::ceil(-std::log(tolerance) / 2 + 1);
+  return p < 2 ? 2 : static_cast<std::size_t>(p);
+}
+template <>
+inline std::size_t taylor_order<long double>(const long double& tolerance) {
+  const long double p = std::ceil(-std::log(tolerance) / 2 + 1);
+  return p < 2 ? 2 : static_cast<std::size_t>(p);
+}
+
+template <class Real, class System>
+class taylor_integrator {
+ public:
+  taylor_integrator(System& system, const Real& tolerance)
+      : m_system(system),
+        m_tolerance(tolerance),
+        m_order(taylor_order(tolerance)),
+        m_jet(system.size(), m_order),
+        m_window(m_order < 4 ? m_order : 4) {
+    m_log_safety = -0.7 / static_cast<double>(m_order - 1) - 2;
+  }
+
+  std::size_t order() const noexcept { return m_order; }
+  const System& system() const noexcept { return m_system; }
+  const Real& tolerance() const noexcept { return m_tolerance; }
+  taylor_jet<Real>& jet() noexcept { return m_jet; }
+  const taylor_jet<Real>& jet() const noexcept { return m_jet; }
+
+  /// Loads the state x at t0, computes its Taylor expansion and returns the
+  /// Jorba-Zou step, capped at |h_max| and signed like h_max (h_max != 0).
+  Real expand(const Real& t0, const std::vector<Real>& x, const Real& h_max) {
+    for (std::size_t i = 0; i < m_jet.size(); ++i) m_jet[i][0] = x[i];
+    m_system.jet(t0, m_jet);
+    return step_size(h_max);
+  }
+
+  /// The Jorba-Zou step of the current jet (see the file comment), capped at |h_max|.
+  /// NOTE: computed in double (logarithms of the coefficients): a step needs a
+  /// few digits, and log/exp at the working precision cost 10% of a float128 run.
+  Real step_size(const Real& h_max) const {
+    using std::abs;
+    using boost::math::isfinite;
+    const std::size_t p = m_order;
+    // max over states and orders of log(|x_i[k]| / s_i) / k = -log(rho)
+    double log_inv_rho = -std::numeric_limits<double>::infinity();
+    bool any = false;
+    for (std::size_t i = 0; i < m_jet.size(); ++i) {
+      const Real* c = m_jet[i];
+      const Real scale = m_system.step_scale(i, c[0]);
+      if (!(scale > 0)) continue;
+      const double log_scale = detail::log_abs(scale);
+      // NOTE: Jorba-Zou use orders p-1 and p. Series of the endpoint systems can
+      // be sparse (only every Q(alpha+1)-th term at s = 0), so we take the
+      // smallest radius over the last m_window orders: never larger, and never
+      // blind to a series whose last two terms happen to vanish.
+      for (std::size_t k = p + 1 - m_window; k <= p; ++k) {
+        if (c[k] == 0) continue;
+        const double l = (detail::log_abs(c[k]) - log_scale) / static_cast<double>(k);
+        if (!any || l > log_inv_rho || std::isnan(l)) log_inv_rho = l;
+        any = true;
+      }
+    }
+    Real h = abs(h_max);
+    if (any && !std::isnan(log_inv_rho)) {
+      // h = rho exp(-0.7/(p-1)) / e^2 = 2^l2, built from its binary exponent (the
+      // range of Real may exceed double's)
+      const Real jz = power_of_e(m_log_safety - log_inv_rho);
+      if (isfinite(jz) && jz < h) h = jz;
+    }
+    if constexpr (requires(const System& sys) { sys.tail_start(); }) limit_tail(h);
+    if (h_max < 0) h = -h;
+    limit_cancellation(h);
+    return h;
+  }
+
+  /// Caps h > 0 so that the orders the system computed in lower precision (from
+  /// tail_start() on) stay below its bound: |x_i[k]| h^k <= exp(tail_log_bound()) s_i.
+  void limit_tail(Real& h) const {
+    const std::size_t start = m_system.tail_start();
+    if (start > m_order) return;
+    const double log_bound = m_system.tail_log_bound();
+    double l_max = -std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < m_jet.size(); ++i) {
+      const Real* c = m_jet[i];
+      const Real scale = m_system.step_scale(i, c[0]);
+      if (!(scale > 0)) continue;
+      const double log_scale = detail::log_abs(scale) + log_bound;
+      for (std::size_t k = start; k <= m_order; ++k)
+        if (c[k] != 0) l_max = std::max(l_max, (detail::log_abs(c[k]) - log_scale) / static_cast<double>(k));
+    }
+    if (!std::isfinite(l_max)) return;
+    const Real cap = power_of_e(-l_max);
+    if (cap < h) h = cap;
+  }
+
+  /// e^l as a Real, built from its binary exponent (Real's range may exceed double's).
+  static Real power_of_e(double l) {
+    using std::ldexp;
+    constexpr double ln2 = 0.693147180559945309417;
+    const double l2 = std::clamp(l / ln2, -1e9, 1e9);
+    const double n = std::floor(l2);
+    return ldexp(Real(std::exp2(l2 - n)), static_cast<int>(n));
+  }
+
+  /// Shrinks h until no component's step polynomial cancels by more than a
+  /// factor m_cancellation: sum_k |x_i[k] h^k| <= K max(s_i, |x_i(t0 + h)|).
+  /// NOTE: the Horner sum's rounding error is ~eps sum |x_i[k] h^k|. For entire
+  /// solutions (fast decaying modes, e^(-lambda t)) the Jorba-Zou radius grows
+  /// like p/e with the order, and the sum with it like e^(lambda h): at 300
+  /// digits (p = 346) 7 digits were lost per step without this cap. The sums
+  /// are formed in double from the logarithms of the terms (a factor 8 needs
+  /// no more).
+  void limit_cancellation(Real& h) const {
+    // NOTE: the worst case, an entire series (x^k/k! at the Jorba-Zou step,
+    // x = p/e^3), sums to e^(p/e^3): below the factor K = 8 up to p = 41
+    // (double, long double, float128), so there the check is skipped.
+    if (m_order <= 41) return;
+    const std::size_t n = m_jet.size(), stride = m_order + 1;
+    m_log.resize(n * stride);
+    m_negative.resize(n * stride);
+    m_log_scale.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const Real* c = m_jet[i];
+      const Real scale = m_system.step_scale(i, c[0]);
+      m_log_scale[i] = scale > 0 ? detail::log_abs(scale) : std::numeric_limits<double>::quiet_NaN();
+      for (std::size_t k = 0; k <= m_order; ++k) {
+        m_log[i * stride + k] = detail::log_abs(c[k]);
+        m_negative[i * stride + k] = c[k] < 0;
+      }
+    }
+    for (int tries = 0; tries < 64; ++tries) {
+      const double log_h = detail::log_abs(h);
+      const bool h_negative = h < 0;
+      bool ok = true;
+      for (std::size_t i = 0; i < n && ok; ++i) {
+        if (std::isnan(m_log_scale[i])) continue;
+        const double* l = &m_log[i * stride];
+        double top = -std::numeric_limits<double>::infinity();
+        for (std::size_t k = 0; k <= m_order; ++k) top = std::max(top, l[k] + static_cast<double>(k) * log_h);
+        if (!std::isfinite(top)) continue;
+        double sum = 0, value = 0;
+        for (std::size_t k = 0; k <= m_order; ++k) {
+          const double term = std::exp(l[k] + static_cast<double>(k) * log_h - top);
+          sum += term;
+          value += (m_negative[i * stride + k] != (h_negative && k % 2 == 1)) ? -term : term;
+        }
+        const double floor = std::exp(m_log_scale[i] - top);
+        ok = sum <= m_cancellation * std::max(std::fabs(value), floor);
+      }
+      if (ok) return;
+      h *= Real(3) / 4;
+    }
+  }
+
+  /// Component i of the step polynomial at t0 + h (dense output).
+  Real value(std::size_t i, const Real& h) const {
+    Real out;
+    detail::horner(out, m_jet[i], m_order, h);
+    return out;
+  }
+  /// d/dt of component i at t0 + h.
+  Real derivative(std::size_t i, const Real& h) const {
+    Real out;
+    detail::horner_derivative(out, m_jet[i], m_order, h);
+    return out;
+  }
+  /// All components at t0 + h.
+  void values(std::vector<Real>& x, const Real& h) const {
+    for (std::size_t i = 0; i < m_jet.size(); ++i) detail::horner(x[i], m_jet[i], m_order, h);
+  }
+
+  /// The root in [0, h] (or [h, 0]) of component i minus `level`, given that it
+  /// changes sign over the step; TOMS 748 on the step polynomial, then one Newton step.
+  Real locate(std::size_t i, const Real& level, const Real& h, const std::string& what) const {
+    auto f = [&](const Real& t) { return Real(value(i, t) - level); };
+    auto df = [&](const Real& t) { return derivative(i, t); };
+    if (h > 0) return detail::monotone_root(f, df, Real(0), h, what);
+    return detail::monotone_root(f, df, h, Real(0), what);
+  }
+
+ private:
+  System& m_system;
+  Real m_tolerance;
+  std::size_t m_order;
+  taylor_jet<Real> m_jet;
+  std::size_t m_window;  // orders p - window + 1 .. p enter the radius estimate
+  double m_log_safety;   // ln(exp(-0.7/(p-1)) / e^2)
+  double m_cancellation = 8;  // at most one digit lost to cancellation per step
+  mutable std::vector<double> m_log, m_log_scale;  // scratch of limit_cancellation
+  mutable std::vector<bool> m_negative;
+};
+
+}  // namespace viscor

@@ -1,0 +1,342 @@
+// Reference tables as CSV: the row format, the writer, and a reader that
+// validates every field and names file, line and field in its errors.
+//
+// Format (RFC 4180 subset: no quoting, no field ever holds a comma or a quote):
+//   line 1  the header, exactly the column names below
+//   then    one row per grid point, sorted by `index`, each ending in '\n'
+// CoR tables:
+//   index,law,alpha,beta,gamma,g,outcome,e,one_minus_e,contact_time,max_compression,digits,method
+// Sticking-threshold tables:
+//   index,law,alpha,beta,solve_for,gamma,g,rebound_at,stick_at,digits,method
+// `index` is the row's position in the full grid of the spec, so shards and
+// resumed runs sort into the same table. alpha and beta are exact ("3/2"),
+// gamma and g exact decimals (except the solved-for threshold column); results
+// are rounded to `digits` certified significant digits. "0" and "1" are exact
+// (e = 0 for a certified stick, e = 1 at gamma = 0); an empty field means "not
+// available"; "inf" is a contact that never ends. The CSV holds no timing, so a
+// table is a deterministic function of its spec and the viscor version.
+// NOTE: this header only reads and writes tables; computing rows is
+// table_row.hpp, so readers of committed tables do not compile the solvers.
+#pragma once
+
+#include <viscor/core/contact_law.hpp>
+#include <viscor/core/detail/exact_decimal.hpp>
+#include <viscor/core/exceptions.hpp>
+#include <viscor/tables/grid_spec.hpp>
+#include <viscor/core/outcome.hpp>
+
+#include <algorithm>
+#include <cstdint>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace viscor {
+
+/// Where a row's numbers come from ("exact" or "certified" in the CSV).
+enum class row_source { exact, certified };
+
+inline std::string to_string(row_source s) { return s == row_source::exact ? "exact" : "certified"; }
+
+/// Human-readable method, for sidecars.
+inline std::string describe(row_source s) {
+  return s == row_source::exact ? "exact closed form evaluated at the working precision (viscor::exact_cor); "
+                                  "certified digits = working digits - 2"
+                                : "viscor::certify: Taylor and adaptive integrators at two precisions";
+}
+
+/// One row of a CoR table, every number as a decimal string rounded to its
+/// certified digits (computed by compute_row, table_row.hpp).
+struct table_row {
+  std::int64_t index = 0;
+  std::string law, alpha, beta, gamma, g;
+  impact_outcome outcome = impact_outcome::rebound;
+  std::string e, one_minus_e, contact_time, max_compression;  ///< empty: not available
+  int digits = 0;
+  row_source source = row_source::exact;
+};
+
+/// One row of a sticking-threshold table (computed by compute_threshold_row,
+/// sticking_threshold.hpp).
+struct threshold_row {
+  std::int64_t index = 0;
+  std::string law, alpha, beta;
+  threshold_variable solve_for = threshold_variable::g;
+  std::string gamma, g;  ///< the fixed input (exact decimal) and the threshold (rounded to `digits`)
+  std::string rebound_at, stick_at;  ///< the certified bracket, at round-trip precision
+  int digits = 0;
+  row_source source = row_source::exact;
+};
+
+enum class table_kind { cor, sticking };
+
+/// The column names of a table of kind `k`, in order.
+inline const std::vector<std::string>& table_columns(table_kind k) {
+  static const std::vector<std::string> cor{"index", "law", "alpha", "beta", "gamma", "g", "outcome", "e",
+                                            "one_minus_e", "contact_time", "max_compression", "digits", "method"};
+  static const std::vector<std::string> sticking{"index", "law", "alpha", "beta", "solve_for", "gamma",
+                                                 "g", "rebound_at", "stick_at", "digits", "method"};
+  return k == table_kind::cor ? cor : sticking;
+}
+
+/// The header line (without '\n').
+inline std::string table_header(table_kind k) {
+  std::string s;
+  for (const auto& c : table_columns(k)) s += (s.empty() ? "" : ",") + c;
+  return s;
+}
+
+/// A row as one CSV line (without '\n').
+inline std::string csv_line(const table_row& r) {
+  std::ostringstream s;
+  s << r.index << ',' << r.law << ',' << r.alpha << ',' << r.beta << ',' << r.gamma << ',' << r.g << ','
+    << to_string(r.outcome) << ',' << r.e << ',' << r.one_minus_e << ',' << r.contact_time << ','
+    << r.max_compression << ',' << r.digits << ',' << to_string(r.source);
+  return s.str();
+}
+
+inline std::string csv_line(const threshold_row& r) {
+  std::ostringstream s;
+  s << r.index << ',' << r.law << ',' << r.alpha << ',' << r.beta << ',' << to_string(r.solve_for) << ','
+    << r.gamma << ',' << r.g << ',' << r.rebound_at << ',' << r.stick_at << ',' << r.digits << ','
+    << to_string(r.source);
+  return s.str();
+}
+
+/// One validated row of a table file: its index, its exact text, its fields.
+struct csv_record {
+  std::int64_t index = 0;
+  std::string text;  ///< the line without '\n'
+  std::vector<std::string> fields;
+  std::size_t line = 0;  ///< 1-based line number in its file
+};
+
+/// A parsed and validated table.
+struct csv_table {
+  table_kind kind = table_kind::cor;
+  std::vector<csv_record> rows;  ///< in file order
+  bool truncated_tail = false;   ///< a last line without '\n' was dropped (allow_truncated_tail)
+
+  const std::string& header() const {
+    static const std::string cor = table_header(table_kind::cor), sticking = table_header(table_kind::sticking);
+    return kind == table_kind::cor ? cor : sticking;
+  }
+};
+
+namespace detail {
+
+inline std::vector<std::string> split_csv_line(const std::string& line) {
+  std::vector<std::string> fields;
+  std::size_t start = 0;
+  for (;;) {
+    const std::size_t comma = line.find(',', start);
+    fields.push_back(line.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+    if (comma == std::string::npos) return fields;
+    start = comma + 1;
+  }
+}
+
+/// Field checks for one row; every error names file, line and field.
+class row_checker {
+ public:
+  row_checker(const std::string& file, std::size_t line, const std::vector<std::string>& columns,
+              const std::vector<std::string>& fields)
+      : m_file(file), m_line(line), m_columns(columns), m_fields(fields) {}
+
+  [[noreturn]] void fail(std::size_t column, const std::string& message) const {
+    throw parse_error(m_file + ":" + std::to_string(m_line) + ": field " + m_columns[column] + ": " + message +
+                      ", got '" + m_fields[column] + "'");
+  }
+  const std::string& at(std::size_t c) const { return m_fields[c]; }
+
+  std::int64_t integer(std::size_t c, std::int64_t most) const {
+    const std::string& s = at(c);
+    if (s.empty() || s.size() > 15 || s.find_first_not_of("0123456789") != std::string::npos ||
+        (s.size() > 1 && s[0] == '0'))
+      fail(c, "must be a non-negative integer");
+    const std::int64_t v = std::stoll(s);
+    if (v > most) fail(c, "must be at most " + std::to_string(most));
+    return v;
+  }
+  exact_decimal decimal(std::size_t c) const {
+    try {
+      return exact_decimal::parse(at(c), m_columns[c]);
+    } catch (const invalid_parameter&) {
+      fail(c, "must be a decimal number");
+    }
+  }
+  /// A decimal in [lo, hi] (bounds inclusive; empty strings mean unbounded).
+  exact_decimal decimal_in(std::size_t c, const std::string& lo, const std::string& hi) const {
+    const exact_decimal x = decimal(c);
+    if ((!lo.empty() && x < exact_decimal::parse(lo, "lo")) || (!hi.empty() && x > exact_decimal::parse(hi, "hi")))
+      fail(c, "must be in [" + (lo.empty() ? "-inf" : lo) + ", " + (hi.empty() ? "inf" : hi) + "]");
+    return x;
+  }
+  /// Empty ("not available"), "inf", or a decimal >= 0.
+  void optional_non_negative(std::size_t c) const {
+    if (at(c).empty() || at(c) == "inf") return;
+    decimal_in(c, "0", "");
+  }
+  exponent exponent_field(std::size_t c) const {
+    try {
+      const exponent x = exponent::parse(at(c), m_columns[c]);
+      if (!(x.approximate() >= 1)) fail(c, "a contact-law exponent must be >= 1");
+      return x;
+    } catch (const parse_error&) {
+      throw;
+    } catch (const invalid_parameter&) {
+      fail(c, "must be a number or a fraction p/q");
+    }
+  }
+  void one_of(std::size_t c, std::initializer_list<const char*> allowed) const {
+    std::string list;
+    for (const char* a : allowed) {
+      if (at(c) == a) return;
+      list += (list.empty() ? "" : ", ") + std::string(a);
+    }
+    fail(c, "must be one of " + list);
+  }
+  /// law, alpha, beta (columns 1-3): a named law must carry its own exponents.
+  void law() const {
+    const exponent alpha = exponent_field(2), beta = exponent_field(3);
+    if (at(1).empty()) return;
+    contact_law named;
+    try {
+      named = law_by_name(at(1));
+    } catch (const invalid_parameter& e) {
+      fail(1, e.what());
+    }
+    if (!(named.alpha == alpha) || !(named.beta == beta))
+      fail(1, "the named law has alpha = " + named.alpha.to_string() + ", beta = " + named.beta.to_string() +
+                  ", not " + alpha.to_string() + ", " + beta.to_string());
+  }
+
+ private:
+  const std::string& m_file;
+  std::size_t m_line;
+  const std::vector<std::string>& m_columns;
+  const std::vector<std::string>& m_fields;
+};
+
+inline void check_cor_row(const row_checker& c) {
+  // index,law,alpha,beta,gamma,g,outcome,e,one_minus_e,contact_time,max_compression,digits,method
+  c.law();
+  c.decimal_in(4, "0", "");
+  c.decimal(5);
+  c.one_of(6, {"rebound", "stick"});
+  if (c.at(6) == "stick") {
+    if (c.at(7) != "0") c.fail(7, "a sticking row has e = 0");
+    if (c.at(8) != "1") c.fail(8, "a sticking row has one_minus_e = 1");
+  } else {
+    c.decimal_in(7, "0", "1");
+    c.decimal_in(8, "0", "1");
+  }
+  c.optional_non_negative(9);
+  c.optional_non_negative(10);
+  c.integer(11, max_working_digits);
+  c.one_of(12, {"exact", "certified"});
+}
+
+inline void check_sticking_row(const row_checker& c) {
+  // index,law,alpha,beta,solve_for,gamma,g,rebound_at,stick_at,digits,method
+  c.law();
+  c.one_of(4, {"g", "gamma"});
+  c.decimal_in(5, "0", "");
+  c.decimal(6);
+  const exact_decimal lo = c.decimal(7), hi = c.decimal(8);
+  if (!(lo < hi)) c.fail(8, "the bracket needs rebound_at < stick_at");
+  c.integer(9, max_working_digits);
+  c.one_of(10, {"exact", "certified"});
+}
+
+}  // namespace detail
+
+/// Parses and validates the text of a table file named `file` (for messages).
+/// With allow_truncated_tail, a last line without '\n' (a write cut short by a
+/// kill) is dropped instead of being an error: used when resuming a run.
+/// Throws parse_error naming file, line and field.
+inline csv_table parse_table(const std::string& text, const std::string& file, bool allow_truncated_tail = false) {
+  csv_table table;
+  std::size_t pos = 0, line_no = 0;
+  bool have_header = false;
+  std::vector<std::string> columns;
+  while (pos < text.size()) {
+    const std::size_t end = text.find('\n', pos);
+    ++line_no;
+    const std::string where = file + ":" + std::to_string(line_no);
+    if (end == std::string::npos) {
+      if (allow_truncated_tail) {
+        table.truncated_tail = true;
+        break;
+      }
+      throw parse_error(where + ": truncated row (the file does not end with a newline)");
+    }
+    std::string line = text.substr(pos, end - pos);
+    pos = end + 1;
+    if (!line.empty() && line.back() == '\r') throw parse_error(where + ": CR-LF line ends are not allowed");
+    if (!have_header) {
+      if (line == table_header(table_kind::cor))
+        table.kind = table_kind::cor;
+      else if (line == table_header(table_kind::sticking))
+        table.kind = table_kind::sticking;
+      else
+        throw parse_error(where + ": wrong columns: expected '" + table_header(table_kind::cor) + "' (CoR table) or '" +
+                          table_header(table_kind::sticking) + "' (sticking thresholds), got '" + line + "'");
+      columns = table_columns(table.kind);
+      have_header = true;
+      continue;
+    }
+    csv_record record;
+    record.fields = detail::split_csv_line(line);
+    record.line = line_no;
+    if (record.fields.size() != columns.size())
+      throw parse_error(where + ": expected " + std::to_string(columns.size()) + " fields (" +
+                        table_header(table.kind) + "), got " + std::to_string(record.fields.size()) +
+                        (record.fields.size() < columns.size() ? " (truncated row?)" : ""));
+    const detail::row_checker check(file, line_no, columns, record.fields);
+    record.index = check.integer(0, std::int64_t(1) << 50);
+    if (table.kind == table_kind::cor)
+      detail::check_cor_row(check);
+    else
+      detail::check_sticking_row(check);
+    record.text = std::move(line);
+    table.rows.push_back(std::move(record));
+  }
+  if (!have_header) throw parse_error(file + ":1: empty file: no header line");
+  return table;
+}
+
+/// Reads and validates a table file; see parse_table.
+inline csv_table read_table(const std::string& path, bool allow_truncated_tail = false) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw error("cannot read table '" + path + "'");
+  std::stringstream s;
+  s << in.rdbuf();
+  return parse_table(s.str(), path, allow_truncated_tail);
+}
+
+/// The canonical text of a table: header, then rows sorted by index. Throws
+/// parse_error for a duplicated index.
+inline std::string table_text(table_kind kind, std::vector<csv_record> rows, const std::string& file) {
+  std::sort(rows.begin(), rows.end(), [](const csv_record& a, const csv_record& b) { return a.index < b.index; });
+  std::string out = table_header(kind) + "\n";
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    if (i > 0 && rows[i].index == rows[i - 1].index)
+      throw parse_error(file + ":" + std::to_string(rows[i].line) + ": field index: row " +
+                        std::to_string(rows[i].index) + " appears twice");
+    out += rows[i].text + "\n";
+  }
+  return out;
+}
+
+/// A row's numeric field as Real (correctly rounded from its exact decimal text).
+template <class Real>
+Real field_value(const csv_table& table, const csv_record& row, const std::string& column) {
+  const auto& cols = table_columns(table.kind);
+  const auto it = std::find(cols.begin(), cols.end(), column);
+  if (it == cols.end()) throw invalid_parameter("no column '" + column + "' in a table of this kind");
+  return parse_real<Real>(row.fields[static_cast<std::size_t>(it - cols.begin())], column);
+}
+
+}  // namespace viscor

@@ -1,0 +1,175 @@
+// One row of a reference table: the single place where a grid point is turned
+// into certified numbers. Every table command (viscor table, its shards and
+// resumed runs, viscor table sticking) evaluates points only through
+// evaluate_point / compute_row below.
+//
+// Sources of a row, in order of preference for row_method::automatic:
+//   1. viscor::certify (include/viscor/certify/certification.hpp): Taylor and adaptive
+//      solves at two precisions; certified digits = their agreement minus a margin.
+//   2. viscor::exact_cor: a closed form (linear law at any g; gamma = 0; beta =
+//      alpha + 1 and Tsuji at g = 0) evaluated at the working precision; its
+//      certified digits are the working digits minus 2.
+// A point with neither is an error: no row is ever written without a certificate.
+#pragma once
+
+#include <viscor/exact/exact_solutions.hpp>
+#include <viscor/core/exceptions.hpp>
+#include <viscor/tables/grid_spec.hpp>
+#include <viscor/core/outcome.hpp>
+#include <viscor/core/precision.hpp>
+#include <viscor/core/real_io.hpp>
+#include <viscor/tables/reference_table.hpp>
+
+#include <boost/math/special_functions/fpclassify.hpp>
+
+#include <algorithm>
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include <viscor/certify/certification.hpp>
+
+namespace viscor {
+
+/// How rows are computed (from the spec).
+struct table_settings {
+  int digits = 40;  ///< working precision, decimal digits
+  row_method method = row_method::automatic;
+  int min_digits = 0;  ///< rebound rows certified to fewer digits are errors
+
+  static table_settings from(const grid_spec& spec) { return {spec.digits, spec.method, spec.min_digits}; }
+};
+
+/// A certified evaluation at one point, in the working type.
+template <class Real>
+struct point_result {
+  impact_outcome outcome = impact_outcome::rebound;
+  Real e = 0, one_minus_e = 1;
+  std::optional<Real> contact_time, max_compression;
+  int digits = 0;                 ///< certified significant digits of e, 1 - e, T_f, u_max
+  bool outcome_certified = true;  ///< false: the methods disagree on rebound versus stick
+  row_source source = row_source::exact;
+};
+
+/// True if viscor::exact_cor has a closed form at (law, gamma, g); mirrors its
+/// dispatch (checked against it in reference_table_test).
+inline bool closed_form_exists(const contact_law& law, bool gamma_is_zero, bool g_is_zero) {
+  if (detail::is_rational(law.alpha, 1, 1) && detail::is_rational(law.beta, 1, 1)) return true;
+  if (gamma_is_zero) return true;
+  return g_is_zero && (detail::is_alpha_plus_one(law) ||
+                       (detail::is_rational(law.alpha, 3, 2) && detail::is_rational(law.beta, 5, 4)));
+}
+
+/// Throws invalid_parameter (before any work) if `method` cannot compute this point.
+inline void require_computable(const contact_law& law, bool gamma_is_zero, bool g_is_zero, row_method method,
+                               const std::string& what) {
+  if (method != row_method::exact) return;
+  if (!closed_form_exists(law, gamma_is_zero, g_is_zero))
+    throw invalid_parameter(what + ": no closed form exists for " + law.describe() +
+                            " (use method 'auto' or 'certify')");
+}
+
+namespace detail {
+
+template <class Real>
+point_result<Real> exact_point(const contact_law& law, const Real& gamma, const Real& g, int working_digits) {
+  const std::optional<exact_result<Real>> x = exact_cor(law, gamma, g);
+  if (!x)
+    throw invalid_parameter("no closed form exists for " + law.describe() + " at gamma = " +
+                            to_decimal_string(gamma) + ", g = " + to_decimal_string(g));
+  point_result<Real> r;
+  r.outcome = x->outcome;
+  r.e = x->e, r.one_minus_e = x->one_minus_e;
+  r.contact_time = x->contact_time, r.max_compression = x->max_compression;
+  // NOTE: a closed form evaluated at working precision: allow 2 digits for the
+  // rounding of the inputs and of the evaluation.
+  r.digits = std::min(working_digits, decimal_digits<Real>()) - 2;
+  r.source = row_source::exact;
+  return r;
+}
+
+// The one call into viscor::certify (certified_result of certification.hpp).
+template <class Real>
+point_result<Real> certified_point(const contact_law& law, const Real& gamma, const Real& g) {
+  const auto c = certify<Real>(law, gamma, g);
+  point_result<Real> r;
+  r.outcome = c.outcome;
+  r.e = c.e, r.one_minus_e = c.one_minus_e;
+  r.contact_time = c.contact_time, r.max_compression = c.max_compression;
+  r.digits = c.digits;
+  r.outcome_certified = c.outcome_certified;
+  r.source = row_source::certified;
+  return r;
+}
+
+}  // namespace detail
+
+/// The certified result at (law, gamma, g) in the working type Real, by the
+/// method of `settings` (see the header comment). Throws invalid_parameter for
+/// a point the method cannot certify.
+template <class Real>
+point_result<Real> evaluate_point(const contact_law& law, const Real& gamma, const Real& g,
+                                  const table_settings& settings) {
+  impact_parameters<Real>{law, gamma, g}.validate();
+  require_computable(law, gamma == 0, g == 0, settings.method,
+                     "point gamma = " + to_decimal_string(gamma) + ", g = " + to_decimal_string(g));
+  if (settings.method != row_method::exact) return detail::certified_point(law, gamma, g);
+  return detail::exact_point(law, gamma, g, settings.digits);
+}
+
+/// x rounded to `digits` significant digits: "0" for zero, "inf" for infinity.
+template <class Real>
+std::string rounded_decimal(const Real& x, int digits) {
+  using boost::math::isinf;
+  if (x == 0) return "0";
+  if (isinf(x)) return x > 0 ? "inf" : "-inf";
+  return to_decimal_string(x, digits);
+}
+
+/// Formats a certified point as a table row (Real -> rounded decimal strings).
+template <class Real>
+table_row make_row(const grid_point& p, const point_result<Real>& r) {
+  table_row row;
+  row.index = p.index;
+  row.law = p.law.name, row.alpha = p.law.alpha.to_string(), row.beta = p.law.beta.to_string();
+  row.gamma = p.gamma, row.g = p.g;
+  row.outcome = r.outcome;
+  row.digits = r.digits;
+  row.source = r.source;
+  const int d = r.digits;
+  if (r.outcome == impact_outcome::stick) {
+    row.e = "0", row.one_minus_e = "1";  // certified outcome: e = 0 exactly
+  } else if (r.one_minus_e == 0) {
+    row.e = "1", row.one_minus_e = "0";  // gamma = 0: energy is conserved exactly
+  } else {
+    row.e = rounded_decimal(r.e, d), row.one_minus_e = rounded_decimal(r.one_minus_e, d);
+  }
+  if (d >= 1) {
+    if (r.contact_time) row.contact_time = rounded_decimal(*r.contact_time, d);
+    if (r.max_compression) row.max_compression = rounded_decimal(*r.max_compression, d);
+  }
+  return row;
+}
+
+/// Computes one row of a CoR table: parses the exact decimal inputs at the
+/// working precision of `settings` (in the calling thread), certifies the point
+/// and rounds the results to their certified digits. Throws certification_error
+/// for an uncertified outcome or a rebound certified to fewer than
+/// settings.min_digits digits: a row is written certified or not at all.
+inline table_row compute_row(const grid_point& p, const table_settings& settings) {
+  return with_working_precision(settings.digits, [&]<class Real>() -> table_row {
+    const Real gamma = parse_real<Real>(p.gamma, "gamma"), g = parse_real<Real>(p.g, "g");
+    const point_result<Real> r = evaluate_point(p.law, gamma, g, settings);
+    const std::string where = "row " + std::to_string(p.index) + " (" + p.law.describe() + ", gamma = " + p.gamma +
+                              ", g = " + p.g + ")";
+    if (!r.outcome_certified)
+      throw certification_error(where + ": the methods disagree on the outcome (rebound or stick)");
+    if (r.outcome == impact_outcome::rebound && (r.digits < 1 || r.digits < settings.min_digits))
+      throw certification_error(where + ": certified to " + std::to_string(r.digits) +
+                                " digits only (min_digits = " + std::to_string(settings.min_digits) +
+                                "); raise the working digits");
+    return make_row(p, r);
+  });
+}
+
+}  // namespace viscor

@@ -1,0 +1,2 @@
+// Fixture: a solver header (the target of the forbidden include).
+#pragma once

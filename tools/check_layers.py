@@ -1,0 +1,73 @@
+#!/usr/bin/env python3
+"""Checks viscor's header layering (docs/architecture.md).
+
+Every header under include/viscor/<folder>/ may include only headers of its own
+folder and of the folders ALLOWED lists for it; nothing but the umbrella and
+generated headers may sit directly in include/viscor/. Exits 1 and names each
+offending include otherwise. Run: python3 tools/check_layers.py [repo root]
+"""
+import pathlib
+import re
+import sys
+
+# folder -> the folders it may include besides itself (the layer diagram).
+ALLOWED = {
+    "core": set(),
+    "exact": {"core"},
+    "ode": {"core"},
+    "impact": {"core", "ode"},
+    "certify": {"core", "exact", "ode", "impact"},
+    "approx": {"core"},  # never the solvers the approximations are tested against
+    "tables": {"core", "exact", "ode", "impact", "certify", "approx"},
+    "scenes": {"core", "exact", "ode", "impact", "certify", "approx", "tables"},
+    "surrogate": {"core", "exact", "ode", "impact", "certify", "approx", "tables"},
+    "dem": {"core", "exact", "ode", "impact", "certify", "approx", "tables", "scenes", "surrogate"},
+    "enclose": {"core", "exact", "ode", "impact", "certify"},
+}
+# Headers that pairs of folders must never include, even where ALLOWED would (the two
+# integrators are independent checks of each other, so neither may see the other).
+FORBIDDEN_PAIRS = [
+    ("ode/taylor_integrator.hpp", "ode/adaptive_integrator.hpp"),
+    ("ode/detail/taylor_series.hpp", "ode/adaptive_integrator.hpp"),
+    ("impact/detail/taylor_tail.hpp", "ode/adaptive_integrator.hpp"),
+    ("impact/taylor_impact.hpp", "impact/adaptive_impact.hpp"),
+    ("impact/taylor_impact.hpp", "ode/adaptive_integrator.hpp"),
+    ("impact/adaptive_impact.hpp", "ode/taylor_integrator.hpp"),
+    ("impact/adaptive_impact.hpp", "impact/detail/impact_systems.hpp"),
+]
+TOP_LEVEL_OK = {"viscor.hpp", "config.hpp.in"}
+INCLUDE = re.compile(r'^\s*#\s*include\s*[<"]viscor/([^>"]+)[>"]', re.M)
+
+
+def main() -> int:
+    root = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else pathlib.Path(__file__).parent.parent)
+    base = root / "include" / "viscor"
+    problems = []
+    for path in sorted(base.iterdir()):
+        if path.is_file() and path.name not in TOP_LEVEL_OK:
+            problems.append(f"{path.relative_to(root)}: headers belong in a concept folder")
+    for path in sorted(base.rglob("*.hpp")):
+        rel = path.relative_to(base).as_posix()
+        folder = rel.split("/")[0]
+        if "/" not in rel:
+            continue
+        if folder not in ALLOWED:
+            problems.append(f"{rel}: folder '{folder}' is not in tools/check_layers.py (add it and its layer)")
+            continue
+        for target in INCLUDE.findall(path.read_text()):
+            tfolder = target.split("/")[0]
+            if "/" not in target:  # config.hpp, version.hpp: generated, allowed everywhere
+                continue
+            if tfolder != folder and tfolder not in ALLOWED[folder]:
+                problems.append(f"{rel} includes viscor/{target}: '{folder}' may not depend on '{tfolder}'")
+        for a, b in FORBIDDEN_PAIRS:
+            if rel == a and f"viscor/{b}" in path.read_text():
+                problems.append(f"{rel} includes viscor/{b}: the two are independent methods")
+    for p in problems:
+        print(p)
+    print(f"check_layers: {len(problems)} problem(s) in {sum(1 for _ in base.rglob('*.hpp'))} headers")
+    return 1 if problems else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
