@@ -77,7 +77,7 @@ TEST(CliDem, BadInputExitsTwoNamingTheValue) {
                        bad{"dem lammps --damping tsuji --target-e 0.5" + steel + " --v0 1", "--gravity"},
                        bad{"dem liggghts --damping hertz --deck-damping 1.5" + tail, "1.5"},
                        // needs less damping than the tsuji polynomial gives at e = 1 (0.0003)
-                       bad{"dem lammps --damping tsuji --target-e 0.9999" + steel + " --v0 1 --gravity 0", "0.9999"},
+                       bad{"dem lammps --damping tsuji --target-e 0.9999" + steel + " --v0 1 --gravity 0", "target_e = 9.999"},
                        // a pulling force: the bead cannot lose enough energy
                        bad{"dem lammps --damping velocity --target-e 0.01" + steel + " --v0 0.01 --gravity 9.81 --force -1", "target_e"}}) {
     SCOPED_TRACE(b.args);
