@@ -2,7 +2,7 @@
 // viscor dem (default-suite subset: per supported model, the polymer bead at
 // v0 = 0.01 m/s under gravity, where the load matters most, and the steel bead
 // at v0 = 1 m/s without; 4 program runs per model; plus two polymer beads pressed
-// together in a head-on collision; ~20 s in all). The full sweep
+// together in a head-on collision; about 20 s quiet, 65 s at load average 16). The full sweep
 // is dem_drop_slow_test.cpp. Programs come from tools/install-deps.sh (Debian 12
 // lammps, liggghts); a missing one is skipped with a message.
 #include "dem_drop_utils.hpp"

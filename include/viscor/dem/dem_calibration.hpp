@@ -61,7 +61,7 @@ struct dem_deck {
   Real poisson_ratio = 0;   ///< deck nu
   Real damping = 0;         ///< deck damping entry (a coefficient, or an e for restitution models)
   Real damping_number = 0;  ///< D, what the code multiplies the damping force by
-  Real gamma0 = 0;          ///< viscor's physical damping, s/m^(beta-alpha)... (k gamma0 d/dt delta^beta is a force)
+  Real gamma0 = 0;          ///< viscor's physical damping (units that make k gamma0 d/dt(delta^beta) a force)
   hertz_contact<Real> contact;
   physical_calibration<Real> calibration;
   std::optional<Real> builtin_e;  ///< restitution models: e when the target is written into the deck
