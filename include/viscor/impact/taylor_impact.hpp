@@ -60,7 +60,6 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
-#include <numeric>
 #include <string>
 #include <vector>
 
@@ -76,38 +75,15 @@ class taylor_impact_solver {
 
  public:
   taylor_impact_solver(const contact_law& law, const Real& gamma, const Real& g, const solve_options<Real>& options)
-      : m_law(law), m_options(options) {
+      : m_law(law), m_options(options), m_c(make_impact_constants(law, gamma, g)) {
     m_tol = options.tolerance > 0 ? options.tolerance : epsilon<Real>();
     if (m_tol < epsilon<Real>()) m_tol = epsilon<Real>();
-    auto& c = m_c;
-    c.alpha = law.alpha.value<Real>();
-    c.beta = law.beta.value<Real>();
-    c.gamma = gamma;
-    c.g = g;
-    c.alpha_plus_one = c.alpha + 1;
-    c.beta_plus_one = c.beta + 1;
-    c.gamma_beta = gamma * c.beta;
-    c.two_gamma = 2 * gamma;
-    c.two_gamma_beta = 2 * c.gamma_beta;
-    c.alpha_equals_beta = law.alpha == law.beta;
-    c.beta_is_one = law.beta.is_rational() && law.beta.numerator() == 1 && law.beta.denominator() == 1;
-    c.alpha_is_one = law.alpha.is_rational() && law.alpha.numerator() == 1 && law.alpha.denominator() == 1;
+    const auto& c = m_c;
     if (c.alpha > 1) {
       using std::pow;
       m_u_growth = pow(Real(4), 1 / (c.alpha - 1));
     }
-    // NOTE: u = s^Q needs polynomials of degree Q(alpha+1) - 1; for huge
-    // denominators the exponential variable is cheaper and just as exact.
     if (law.alpha.is_rational() && law.beta.is_rational()) {
-      const long q = std::lcm(law.alpha.denominator(), law.beta.denominator());
-      if (q <= 64) {
-        const long qa = q / law.alpha.denominator() * law.alpha.numerator();
-        const long qb = q / law.beta.denominator() * law.beta.numerator();
-        if (qa <= 512 && qb <= 512) {
-          c.use_root_variable = true;
-          c.Q = q, c.Q_alpha = qa, c.Q_beta = qb;
-        }
-      }
       // alpha + 1 = 2 beta, g = 0, underdamped: the spiral variables (impact_systems.hpp).
       const long p1 = law.alpha.numerator(), q1 = law.alpha.denominator();
       const long p2 = law.beta.numerator(), q2 = law.beta.denominator();
