@@ -506,4 +506,8 @@ class spiral_system {
   Real m_time_rate, m_dissipation_rate, m_t;
 };
 
+// The integrator caps its steps by the double tail of these two (taylor_integrator::limit_tail).
+static_assert(taylor_system_with_tail<time_system<double>> && taylor_system_with_tail<endpoint_system<double>>);
+static_assert(taylor_system<spiral_system<double>, double> && !taylor_system_with_tail<spiral_system<double>>);
+
 }  // namespace viscor::detail
