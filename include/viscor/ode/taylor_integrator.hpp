@@ -115,7 +115,7 @@ class taylor_integrator {
 
   /// The Jorba-Zou step of the current jet (see the file comment), capped at |h_max|.
   /// NOTE: computed in double (logarithms of the coefficients): a step needs a
-  /// few digits, and log/exp at the working precision cost 10% of a float128 run.
+  /// few digits, and log/exp at the working precision are costly (docs/performance.md).
   Real step_size(const Real& h_max) const {
     using std::abs;
     using boost::math::isfinite;
@@ -185,10 +185,9 @@ class taylor_integrator {
   /// factor m_cancellation: sum_k |x_i[k] h^k| <= K max(s_i, |x_i(t0 + h)|).
   /// NOTE: the Horner sum's rounding error is ~eps sum |x_i[k] h^k|. For entire
   /// solutions (fast decaying modes, e^(-lambda t)) the Jorba-Zou radius grows
-  /// like p/e with the order, and the sum with it like e^(lambda h): at 300
-  /// digits (p = 346) 7 digits were lost per step without this cap. The sums
-  /// are formed in double from the logarithms of the terms (a factor 8 needs
-  /// no more).
+  /// like p/e with the order, and the sum with it like e^(lambda h), so that
+  /// digits are lost at high orders (docs/performance.md). The sums are formed
+  /// in double from the logarithms of the terms (a factor 8 needs no more).
   void limit_cancellation(Real& h) const {
     // NOTE: the worst case, an entire series (x^k/k! at the Jorba-Zou step,
     // x = p/e^3), sums to e^(p/e^3): below the factor K = 8 up to p = 41

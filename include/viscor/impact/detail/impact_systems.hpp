@@ -388,8 +388,8 @@ class endpoint_system {
       m_deg_J = static_cast<std::size_t>(Q - 1);
       m_deg_L = static_cast<std::size_t>(m_c.Q_beta - 1);
       m_deg_M = static_cast<std::size_t>(std::max<long>(Q - 1, Q + m_c.Q_alpha - 1));
-      // NOTE: only up to the degrees: beyond them the coefficients are 0 (a
-      // loop to the order was a fifth of the work of a float128 endpoint jet).
+      // NOTE: only up to the degrees: beyond them the coefficients are 0, and
+      // a loop to the order is costly (docs/performance.md).
       const std::size_t top = std::min(p, std::max({m_deg_J, m_deg_L, m_deg_M}));
       for (std::size_t j = 0; j <= top; ++j) {
         m_J[j] *= Q;
