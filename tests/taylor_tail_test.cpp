@@ -10,36 +10,16 @@
 
 #include "test_utils.hpp"
 
-#include <numeric>
 #include <vector>
 
 namespace viscor {
 namespace {
 
 #if VISCOR_HAS_FLOAT128 && VISCOR_HAS_MPFR
+// The solver's constants (one place: detail::make_impact_constants).
 template <class Real>
 detail::impact_constants<Real> constants(const contact_law& law, const char* gamma, const char* g) {
-  detail::impact_constants<Real> c;
-  c.alpha = law.alpha.value<Real>();
-  c.beta = law.beta.value<Real>();
-  c.gamma = parse_real<Real>(gamma, "gamma");
-  c.g = parse_real<Real>(g, "g");
-  c.alpha_plus_one = c.alpha + 1;
-  c.beta_plus_one = c.beta + 1;
-  c.gamma_beta = c.gamma * c.beta;
-  c.two_gamma = 2 * c.gamma;
-  c.two_gamma_beta = 2 * c.gamma_beta;
-  c.alpha_equals_beta = law.alpha == law.beta;
-  c.alpha_is_one = law.alpha.is_rational() && law.alpha.numerator() == 1 && law.alpha.denominator() == 1;
-  c.beta_is_one = law.beta.is_rational() && law.beta.numerator() == 1 && law.beta.denominator() == 1;
-  if (law.alpha.is_rational() && law.beta.is_rational()) {  // u = s^Q, as taylor_impact.hpp
-    const long q = std::lcm(law.alpha.denominator(), law.beta.denominator());
-    c.use_root_variable = true;
-    c.Q = q;
-    c.Q_alpha = q / law.alpha.denominator() * law.alpha.numerator();
-    c.Q_beta = q / law.beta.denominator() * law.beta.numerator();
-  }
-  return c;
+  return detail::make_impact_constants(law, parse_real<Real>(gamma, "gamma"), parse_real<Real>(g, "g"));
 }
 
 // What the orders from tail_start on change in the step polynomial at h: the

@@ -37,14 +37,16 @@
 //   handful, as r(sigma) varies on the scale 1/omega.
 #pragma once
 
-#include <viscor/ode/detail/taylor_series.hpp>
+#include <viscor/core/contact_law.hpp>
 #include <viscor/impact/detail/taylor_tail.hpp>
+#include <viscor/ode/detail/taylor_series.hpp>
 #include <viscor/ode/taylor_integrator.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <numeric>
 #include <type_traits>
 #include <vector>
 
@@ -63,6 +65,41 @@ struct impact_constants {
   bool use_root_variable = false;
   long Q = 1, Q_alpha = 1, Q_beta = 1;
 };
+
+/// The constants of (law, gamma, g) in Real: the one place that builds
+/// impact_constants (the Taylor solver and the tests call it). The endpoint
+/// variable is u = s^Q for rational exponents, Q = lcm of the denominators,
+/// unless Q > 64 or Q alpha or Q beta > 512; else u = exp(sigma).
+template <class Real>
+impact_constants<Real> make_impact_constants(const contact_law& law, const Real& gamma, const Real& g) {
+  impact_constants<Real> c;
+  c.alpha = law.alpha.value<Real>();
+  c.beta = law.beta.value<Real>();
+  c.gamma = gamma;
+  c.g = g;
+  c.alpha_plus_one = c.alpha + 1;
+  c.beta_plus_one = c.beta + 1;
+  c.gamma_beta = gamma * c.beta;
+  c.two_gamma = 2 * gamma;
+  c.two_gamma_beta = 2 * c.gamma_beta;
+  c.alpha_equals_beta = law.alpha == law.beta;
+  c.beta_is_one = law.beta.is_rational() && law.beta.numerator() == 1 && law.beta.denominator() == 1;
+  c.alpha_is_one = law.alpha.is_rational() && law.alpha.numerator() == 1 && law.alpha.denominator() == 1;
+  // NOTE: u = s^Q needs polynomials of degree Q(alpha+1) - 1; for huge
+  // denominators the exponential variable is cheaper and just as exact.
+  if (law.alpha.is_rational() && law.beta.is_rational()) {
+    const long q = std::lcm(law.alpha.denominator(), law.beta.denominator());
+    if (q <= 64) {
+      const long qa = q / law.alpha.denominator() * law.alpha.numerator();
+      const long qb = q / law.beta.denominator() * law.beta.numerator();
+      if (qa <= 512 && qb <= 512) {
+        c.use_root_variable = true;
+        c.Q = q, c.Q_alpha = qa, c.Q_beta = qb;
+      }
+    }
+  }
+  return c;
+}
 
 /// Pointers to the series of one time_system jet in arithmetic T, with its scratch.
 template <class T>
@@ -351,8 +388,8 @@ class endpoint_system {
       m_deg_J = static_cast<std::size_t>(Q - 1);
       m_deg_L = static_cast<std::size_t>(m_c.Q_beta - 1);
       m_deg_M = static_cast<std::size_t>(std::max<long>(Q - 1, Q + m_c.Q_alpha - 1));
-      // NOTE: only up to the degrees: beyond them the coefficients are 0 (a
-      // loop to the order was a fifth of the work of a float128 endpoint jet).
+      // NOTE: only up to the degrees: beyond them the coefficients are 0, and
+      // a loop to the order is costly (docs/performance.md).
       const std::size_t top = std::min(p, std::max({m_deg_J, m_deg_L, m_deg_M}));
       for (std::size_t j = 0; j <= top; ++j) {
         m_J[j] *= Q;
@@ -468,5 +505,9 @@ class spiral_system {
   std::vector<Real> m_R, m_Y, m_inv;
   Real m_time_rate, m_dissipation_rate, m_t;
 };
+
+// The integrator caps its steps by the double tail of these two (taylor_integrator::limit_tail).
+static_assert(taylor_system_with_tail<time_system<double>> && taylor_system_with_tail<endpoint_system<double>>);
+static_assert(taylor_system<spiral_system<double>, double> && !taylor_system_with_tail<spiral_system<double>>);
 
 }  // namespace viscor::detail
