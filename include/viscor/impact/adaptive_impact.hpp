@@ -40,6 +40,7 @@
 #include <viscor/core/impact_result.hpp>
 #include <viscor/core/parameters.hpp>
 #include <viscor/core/real_io.hpp>
+#include <viscor/core/widen.hpp>
 
 #include <boost/math/special_functions/fpclassify.hpp>
 
@@ -69,33 +70,6 @@ void integer_power(const Real& x, std::int64_t n, Real& result, Real& base) {
     if (n & 1) result *= base;
     if (n > 1) base *= base;
   }
-}
-
-template <class W, class Real>
-W to_work(const Real& x) {
-#if VISCOR_HAS_MPFR
-  if constexpr (std::is_same_v<W, mpfr_real>) {
-    W y(x);  // exact: at least the source's precision
-    const unsigned wanted = W::thread_default_precision();
-    if (y.precision() < wanted) y.precision(wanted);  // exact widening
-    return y;
-  } else
-#endif
-    return static_cast<W>(x);
-}
-
-template <class Real, class W>
-Real from_work(const W& x, [[maybe_unused]] unsigned real_digits10) {
-  using boost::math::isinf;
-  if (isinf(x)) return x > 0 ? std::numeric_limits<Real>::infinity() : -std::numeric_limits<Real>::infinity();
-#if VISCOR_HAS_MPFR
-  if constexpr (std::is_same_v<Real, mpfr_real>) {
-    Real y = x;
-    y.precision(real_digits10);  // round to the caller's precision
-    return y;
-  } else
-#endif
-    return static_cast<Real>(x);
 }
 
 /// The contact law's powers of v = u^(1/Q), in the work type.
@@ -636,7 +610,7 @@ bool needs_wide_work(const solve_options<Real>& options, const Real& g, int guar
   scoped_precision precision(decimal_digits<Real>() + guard);
   const Real eps_real = epsilon<Real>();
   const Real tol_real = options.tolerance > 0 && options.tolerance > eps_real ? options.tolerance : eps_real;
-  const W rtol = to_work<W>(tol_real) / (64 * (1 + abs(to_work<W>(g))));
+  const W rtol = widen<W>(tol_real) / (64 * (1 + abs(widen<W>(g))));
   return rtol < gbs_rounding_floor(rtol);
 }
 
@@ -675,17 +649,17 @@ impact_result<Real> solve_impact_adaptive_in(const contact_law& law, const Real&
 #endif
   // NOTE: run-time mpfr work type: precision for the whole solve, restored on exit.
   scoped_precision work_precision(real_digits + guard);
-  const W w_gamma = detail::to_work<W>(gamma), w_g = detail::to_work<W>(g);
+  const W w_gamma = widen<W>(gamma), w_g = widen<W>(g);
   // Local tolerance well below the target: an impact takes tens of steps, and
   // under a load g the speed reaches ~|g| while e ~ 1 is what remains of it, so
   // the tolerance shrinks with 1 + |g|; never below the extrapolation's rounding floor.
   using std::abs;
   using std::pow;
   const int max_columns = detail::gbs_max_columns(decimal_digits<W>(), guard);
-  W rtol = detail::to_work<W>(tol_real) / (64 * (1 + abs(w_g)));
+  W rtol = widen<W>(tol_real) / (64 * (1 + abs(w_g)));
   const W rounding_floor = detail::gbs_rounding_floor(rtol);
   if (rtol < rounding_floor) rtol = rounding_floor;
-  const W eps_e = detail::to_work<W>(tol_real);
+  const W eps_e = widen<W>(tol_real);
   detail::adaptive_impact_solver<W> solver(law, w_gamma, w_g, rtol, eps_e, options.max_steps, max_columns, where);
   const auto raw = solver.solve();
 
@@ -693,9 +667,9 @@ impact_result<Real> solve_impact_adaptive_in(const contact_law& law, const Real&
   r.method = integration_method::adaptive;
   r.outcome = raw.outcome;
   r.steps = raw.steps;
-  r.contact_time = detail::from_work<Real>(raw.contact_time, caller_digits);
-  r.max_compression = detail::from_work<Real>(raw.max_compression, caller_digits);
-  r.time_of_max_compression = detail::from_work<Real>(raw.time_of_max, caller_digits);
+  r.contact_time = narrow<Real>(raw.contact_time, caller_digits);
+  r.max_compression = narrow<Real>(raw.max_compression, caller_digits);
+  r.time_of_max_compression = narrow<Real>(raw.time_of_max, caller_digits);
   W err = solver.accumulated_error() + raw.error + eps_e;
   if (raw.outcome == impact_outcome::stick) {
     r.e = 0, r.one_minus_e = 1, r.energy_residual = 0;
@@ -707,12 +681,12 @@ impact_result<Real> solve_impact_adaptive_in(const contact_law& law, const Real&
     // NOTE: e from the velocity when it is small (relative digits near sticking),
     // from the dissipated energy when near 1 (no cancellation as gamma -> 0).
     const bool small = raw.e_w < W(1) / 2;
-    r.e = detail::from_work<Real>(small ? raw.e_w : W(1 - one_minus_e), caller_digits);
-    r.one_minus_e = detail::from_work<Real>(small ? W(1 - raw.e_w) : one_minus_e, caller_digits);
-    r.energy_residual = detail::from_work<Real>(residual, caller_digits);
+    r.e = narrow<Real>(small ? raw.e_w : W(1 - one_minus_e), caller_digits);
+    r.one_minus_e = narrow<Real>(small ? W(1 - raw.e_w) : one_minus_e, caller_digits);
+    r.energy_residual = narrow<Real>(residual, caller_digits);
     err += abs(residual);
   }
-  r.error_estimate = detail::from_work<Real>(err, caller_digits);
+  r.error_estimate = narrow<Real>(err, caller_digits);
   return r;
 }
 
