@@ -593,25 +593,50 @@ class adaptive_impact_solver {
 
 namespace detail {
 
+/// The adaptive solver's tolerance rules in one place. The requested tolerance on e is
+/// at least Real's epsilon (0 asks for exactly that); evaluate at the caller's precision.
+template <class Real>
+Real clamped_tolerance(const solve_options<Real>& options) {
+  const Real eps_real = epsilon<Real>();
+  return options.tolerance > 0 && options.tolerance > eps_real ? options.tolerance : eps_real;
+}
+
+/// The tolerances of a solve in the work type W (at its working precision).
+template <class W>
+struct adaptive_tolerances {
+  W rtol;            ///< local tolerance per step
+  W eps_e;           ///< absolute tolerance on e
+  bool floored;      ///< rtol was raised to the rounding floor of W
+};
+
+/// Local tolerance well below the target: an impact takes tens of steps, and
+/// under a load g the speed reaches ~|g| while e ~ 1 is what remains of it, so
+/// the tolerance shrinks with 1 + |g|; never below the extrapolation's rounding floor.
+template <class W, class Real>
+adaptive_tolerances<W> adaptive_tolerances_for(const Real& tolerance, const Real& g) {
+  using std::abs;
+  W rtol = widen<W>(tolerance) / (64 * (1 + abs(widen<W>(g))));
+  const W rounding_floor = gbs_rounding_floor(rtol);
+  const bool floored = rtol < rounding_floor;
+  if (floored) rtol = rounding_floor;
+  return {rtol, widen<W>(tolerance), floored};
+}
+
 template <class W, class Real>
 impact_result<Real> solve_impact_adaptive_in(const contact_law& law, const Real& gamma, const Real& g,
-                                             const solve_options<Real>& options, int guard);
+                                             const Real& tolerance, std::size_t max_steps, int guard);
 
 template <class Work, class = void>
 struct has_wide_work : std::false_type {};
 template <class Work>
 struct has_wide_work<Work, std::enable_if_t<Work::has_wide>> : std::true_type {};
 
-/// Whether the local tolerance, 64 (1 + |g|) below Real's, falls under the rounding
-/// floor of the work type W with `guard` digits (then the wide work type is used).
+/// Whether the local tolerance falls under the rounding floor of the work type W
+/// with `guard` digits (then the wide work type is used).
 template <class Real, class W>
-bool needs_wide_work(const solve_options<Real>& options, const Real& g, int guard) {
-  using std::abs;
+bool needs_wide_work(const Real& tolerance, const Real& g, int guard) {
   scoped_precision precision(decimal_digits<Real>() + guard);
-  const Real eps_real = epsilon<Real>();
-  const Real tol_real = options.tolerance > 0 && options.tolerance > eps_real ? options.tolerance : eps_real;
-  const W rtol = widen<W>(tol_real) / (64 * (1 + abs(widen<W>(g))));
-  return rtol < gbs_rounding_floor(rtol);
+  return adaptive_tolerances_for<W>(tolerance, g).floored;
 }
 
 }  // namespace detail
@@ -624,23 +649,24 @@ impact_result<Real> solve_impact_adaptive(const contact_law& law, const Real& ga
   impact_parameters<Real>{law, gamma, g}.validate();
   require_non_negative(options.tolerance, "tolerance");
   if (options.max_steps == 0) throw invalid_parameter("parameter max_steps must be > 0, got 0");
+  const Real tolerance = detail::clamped_tolerance(options);
   using work = detail::gbs_work<Real>;
   if constexpr (detail::has_wide_work<work>::value) {
-    if (detail::needs_wide_work<Real, typename work::type>(options, g, work::guard_digits()))
-      return detail::solve_impact_adaptive_in<typename work::wide_type>(law, gamma, g, options,
+    if (detail::needs_wide_work<Real, typename work::type>(tolerance, g, work::guard_digits()))
+      return detail::solve_impact_adaptive_in<typename work::wide_type>(law, gamma, g, tolerance, options.max_steps,
                                                                        work::wide_guard_digits());
   }
-  return detail::solve_impact_adaptive_in<typename work::type>(law, gamma, g, options, work::guard_digits());
+  return detail::solve_impact_adaptive_in<typename work::type>(law, gamma, g, tolerance, options.max_steps,
+                                                              work::guard_digits());
 }
 
 namespace detail {
 
+/// One solve in the work type W with `guard` digits beyond Real's, rounded back to Real.
 template <class W, class Real>
 impact_result<Real> solve_impact_adaptive_in(const contact_law& law, const Real& gamma, const Real& g,
-                                             const solve_options<Real>& options, int guard) {
+                                             const Real& tolerance, std::size_t max_steps, int guard) {
   const int real_digits = decimal_digits<Real>();
-  const Real eps_real = epsilon<Real>();
-  const Real tol_real = options.tolerance > 0 && options.tolerance > eps_real ? options.tolerance : eps_real;
   const std::string where = law.describe() + ", gamma = " + to_decimal_string(gamma) + ", g = " + to_decimal_string(g);
 #if VISCOR_HAS_MPFR
   const unsigned caller_digits = std::is_same_v<Real, mpfr_real> ? mpfr_real::thread_default_precision() : 0u;
@@ -650,17 +676,10 @@ impact_result<Real> solve_impact_adaptive_in(const contact_law& law, const Real&
   // NOTE: run-time mpfr work type: precision for the whole solve, restored on exit.
   scoped_precision work_precision(real_digits + guard);
   const W w_gamma = widen<W>(gamma), w_g = widen<W>(g);
-  // Local tolerance well below the target: an impact takes tens of steps, and
-  // under a load g the speed reaches ~|g| while e ~ 1 is what remains of it, so
-  // the tolerance shrinks with 1 + |g|; never below the extrapolation's rounding floor.
   using std::abs;
-  using std::pow;
-  const int max_columns = detail::gbs_max_columns(decimal_digits<W>(), guard);
-  W rtol = widen<W>(tol_real) / (64 * (1 + abs(w_g)));
-  const W rounding_floor = detail::gbs_rounding_floor(rtol);
-  if (rtol < rounding_floor) rtol = rounding_floor;
-  const W eps_e = widen<W>(tol_real);
-  detail::adaptive_impact_solver<W> solver(law, w_gamma, w_g, rtol, eps_e, options.max_steps, max_columns, where);
+  const int max_columns = gbs_max_columns(decimal_digits<W>(), guard);
+  const adaptive_tolerances<W> tol = adaptive_tolerances_for<W>(tolerance, g);
+  adaptive_impact_solver<W> solver(law, w_gamma, w_g, tol.rtol, tol.eps_e, max_steps, max_columns, where);
   const auto raw = solver.solve();
 
   impact_result<Real> r;
@@ -670,7 +689,7 @@ impact_result<Real> solve_impact_adaptive_in(const contact_law& law, const Real&
   r.contact_time = narrow<Real>(raw.contact_time, caller_digits);
   r.max_compression = narrow<Real>(raw.max_compression, caller_digits);
   r.time_of_max_compression = narrow<Real>(raw.time_of_max, caller_digits);
-  W err = solver.accumulated_error() + raw.error + eps_e;
+  W err = solver.accumulated_error() + raw.error + tol.eps_e;
   if (raw.outcome == impact_outcome::stick) {
     r.e = 0, r.one_minus_e = 1, r.energy_residual = 0;
   } else {
