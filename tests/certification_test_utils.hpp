@@ -93,7 +93,7 @@ int check_honesty(const sample_point& p) {
   const certified_result<Real> c = certify<Real>(p.law, gamma, g);
   const int reference_digits = 2 * decimal_digits<Real>() + 10;
   scoped_precision precision(reference_digits);
-  const mpfr_real rg = detail::to_work<mpfr_real>(gamma), rgg = detail::to_work<mpfr_real>(g);
+  const mpfr_real rg = detail::widen<mpfr_real>(gamma), rgg = detail::widen<mpfr_real>(g);
   impact_outcome truth_outcome;
   mpfr_real truth_e, truth_one_minus_e, truth_time;
   bool time_known = true;
@@ -119,10 +119,10 @@ int check_honesty(const sample_point& p) {
   }
   int agree = 1000;
   if (c.outcome == impact_outcome::rebound) {
-    agree = std::min(agree, true_digits(detail::to_work<mpfr_real>(c.e), truth_e));
-    agree = std::min(agree, true_digits(detail::to_work<mpfr_real>(c.one_minus_e), truth_one_minus_e));
+    agree = std::min(agree, true_digits(detail::widen<mpfr_real>(c.e), truth_e));
+    agree = std::min(agree, true_digits(detail::widen<mpfr_real>(c.one_minus_e), truth_one_minus_e));
   }
-  if (time_known) agree = std::min(agree, true_digits(detail::to_work<mpfr_real>(c.contact_time), truth_time));
+  if (time_known) agree = std::min(agree, true_digits(detail::widen<mpfr_real>(c.contact_time), truth_time));
   EXPECT_LE(c.digits, agree) << "over-claim: certified " << c.digits << " digits, " << agree << " are right; e = "
                              << to_decimal_string(c.e) << ", truth " << to_decimal_string(truth_e);
   EXPECT_LE(c.digits, decimal_digits<Real>());

@@ -4,6 +4,7 @@
 
 #include <viscor/core/real_io.hpp>
 #include <viscor/core/real_types.hpp>
+#include <viscor/core/widen.hpp>
 
 #include <gtest/gtest.h>
 
@@ -13,6 +14,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <type_traits>
 #include <unistd.h>
 
 namespace viscor::test {
@@ -86,10 +88,14 @@ template <class Real>
                                        << " > tolerance " << to_decimal_string(tol, 4);
 }
 
-/// Converts x exactly into the reference type (through a round-trip decimal string).
+/// Converts x into To: exactly by the library's widening rule (detail::widen) where To
+/// holds every value of From, else rounded through a round-trip decimal string.
 template <class To, class From>
 To convert(const From& x) {
-  return parse_real<To>(to_decimal_string(x, roundtrip_digits<From>() + 2), "converted value");
+  if constexpr (std::is_same_v<To, From> || (detail::can_widen<To, From>() && has_fixed_precision<From>()))
+    return detail::widen<To>(x);
+  else
+    return parse_real<To>(to_decimal_string(x, roundtrip_digits<From>() + 2), "converted value");
 }
 
 /// Result of running the viscor CLI: exit status and both streams.

@@ -49,6 +49,7 @@
 #include <viscor/core/parameters.hpp>
 #include <viscor/core/real_io.hpp>
 #include <viscor/core/real_types.hpp>
+#include <viscor/core/widen.hpp>
 #include <viscor/impact/taylor_impact.hpp>
 
 #include <boost/math/special_functions/fpclassify.hpp>
@@ -214,11 +215,11 @@ void certify_against_reference(const contact_law& law, const Real& gamma, const 
                                int reference, unsigned caller_digits, const impact_result<Real>& taylor,
                                const impact_result<Real>& adaptive, certified_result<Real>& out) {
   const int working = out.working_digits;
-  // NOTE: the inputs are exact binary numbers of Real; to_work converts them exactly.
-  Ref ref_gamma = to_work<Ref>(gamma);
+  // NOTE: the inputs are exact binary numbers of Real; widen converts them exactly.
+  Ref ref_gamma = widen<Ref>(gamma);
   if (options.perturb == certified_source::taylor_reference)
     ref_gamma *= 1 + parse_real<Ref>(options.perturbation, "perturbation");
-  const Ref ref_g = to_work<Ref>(g);
+  const Ref ref_g = widen<Ref>(g);
   double seconds = 0;
   const impact_result<Ref> ref =
       timed([&] { return solve_impact_taylor<Ref>(law, ref_gamma, ref_g, solve_options<Ref>{}); }, seconds);
@@ -226,13 +227,13 @@ void certify_against_reference(const contact_law& law, const Real& gamma, const 
   entry.source = certified_source::taylor_reference;
   entry.precision_digits = reference;
   entry.outcome = ref.outcome;
-  entry.e = from_work<Real>(ref.e, caller_digits);
-  entry.one_minus_e = from_work<Real>(ref.one_minus_e, caller_digits);
-  entry.contact_time = from_work<Real>(ref.contact_time, caller_digits);
-  entry.max_compression = from_work<Real>(ref.max_compression, caller_digits);
+  entry.e = narrow<Real>(ref.e, caller_digits);
+  entry.one_minus_e = narrow<Real>(ref.one_minus_e, caller_digits);
+  entry.contact_time = narrow<Real>(ref.contact_time, caller_digits);
+  entry.max_compression = narrow<Real>(ref.max_compression, caller_digits);
   entry.e_text = to_decimal_string(ref.e), entry.one_minus_e_text = to_decimal_string(ref.one_minus_e);
   entry.contact_time_text = to_decimal_string(ref.contact_time);
-  entry.error_estimate = from_work<Real>(ref.error_estimate, caller_digits);
+  entry.error_estimate = narrow<Real>(ref.error_estimate, caller_digits);
   entry.steps = ref.steps;
   entry.seconds = seconds;
   entry.digits_e = entry.digits_one_minus_e = entry.digits_contact_time = reference;
@@ -250,13 +251,13 @@ void certify_against_reference(const contact_law& law, const Real& gamma, const 
   const Ref one = 1;
   for (auto* c : {&out.computations[0], &out.computations[2]}) {
     const impact_result<Real>& r = c->source == certified_source::taylor ? taylor : adaptive;
-    c->digits_e = agreement_digits(to_work<Ref>(r.e), ref.e, ref.e, working);
-    c->absolute_digits_e = agreement_digits(to_work<Ref>(r.e), ref.e, one, working);
-    c->digits_one_minus_e = agreement_digits(to_work<Ref>(r.one_minus_e), ref.one_minus_e, ref.one_minus_e, working);
+    c->digits_e = agreement_digits(widen<Ref>(r.e), ref.e, ref.e, working);
+    c->absolute_digits_e = agreement_digits(widen<Ref>(r.e), ref.e, one, working);
+    c->digits_one_minus_e = agreement_digits(widen<Ref>(r.one_minus_e), ref.one_minus_e, ref.one_minus_e, working);
     c->digits_contact_time =
-        agreement_digits(to_work<Ref>(r.contact_time), ref.contact_time, ref.contact_time, working);
+        agreement_digits(widen<Ref>(r.contact_time), ref.contact_time, ref.contact_time, working);
     c->digits_max_compression =
-        agreement_digits(to_work<Ref>(r.max_compression), ref.max_compression, ref.max_compression, working);
+        agreement_digits(widen<Ref>(r.max_compression), ref.max_compression, ref.max_compression, working);
     if (ref.outcome == impact_outcome::stick && r.outcome == impact_outcome::stick) {
       // e = 0 and 1 - e = 1 exactly once the outcome is certified: nothing to compare.
       c->digits_e = c->digits_one_minus_e = c->absolute_digits_e = working;

@@ -10,27 +10,22 @@
 // Column count (order) and step are chosen together to minimise the work per
 // unit step A_j/H_j, A_j = 1 + n_0 + ... + n_j right-hand-side evaluations.
 //
-// NOTE: why this reaches 50 and 100 digits in reasonable time. The order is not
-// capped at a small constant (Boost.Odeint's bulirsch_stoer stops at m_k_max = 8,
-// i.e. order 16, which at tolerance 1e-100 forces steps ~1e-6 of the solution's
-// scale). Here the column count grows with the requested digits (measured on the
-// impact problem: 16-21 columns, order 34-44, at 50 digits; about 29, order 60, at
-// 100 digits; 49 at 200), so a step stays a sizeable fraction of the radius of
-// convergence and an impact takes 40-90 steps. The work per step grows only like
-// j^2 (harmonic sequence), i.e. quadratically in the digits, as for a Taylor method:
-// 9-10 ms per impact at 50 digits, 45-55 ms at 100 (1.2-1.9x the Taylor solve; it
-// was 2.2-3.3x before the work type was fitted to whole limbs, the tableau replaced by
-// weights, the event location shortened and the right-hand sides made in-place).
+// NOTE: why this reaches 50 and 100 digits in reasonable time: the order is not
+// capped at a small constant (Boost.Odeint's bulirsch_stoer stops at order 16); the
+// column count grows with the requested digits, so a step stays a sizeable fraction
+// of the radius of convergence, and the work per step grows only like j^2
+// (harmonic sequence), i.e. quadratically in the digits, as for a Taylor method.
 //
 // NOTE: rounding. The harmonic sequence's extrapolation amplifies the rounding
-// errors of the T_{j,0} by its Lebesgue constant, about 10^(0.33 j) (computed exactly
-// and measured: 20 columns lose 6.5 digits of the state). The midpoint columns
-// therefore run on increments d = z - y from the step's start, so that their
+// errors of the T_{j,0} by its Lebesgue constant, about 10^(0.33 j). The midpoint
+// columns therefore run on increments d = z - y from the step's start, so that their
 // rounding is relative to the increment (a tenth of the state or less) rather than
-// to the state: at 50 digits in a 57-digit work type this gave 51-53 correct digits
-// of e, 1 - e, T_f and u_max instead of 50-52. gbs_work<Real> names a wider type to
-// integrate in (guard digits), and gbs_max_columns caps j to what those guard digits
-// absorb; callers that integrate in Real itself lose ~0.3 j - 1 digits.
+// to the state. gbs_work<Real> names a wider type to integrate in (guard digits),
+// and gbs_max_columns caps j to what those guard digits absorb; callers that
+// integrate in Real itself lose ~0.3 j - 1 digits.
+//
+// Measurements behind these and the choices below: docs/performance.md,
+// "ode/adaptive_integrator.hpp".
 #pragma once
 
 #include <viscor/core/detail/log_abs.hpp>
@@ -69,15 +64,9 @@ struct gbs_work<long double> {
 };
 #endif
 #if VISCOR_HAS_MPFR
-// NOTE: MPFR's cost goes by 64-bit limbs, not by bits (measured here, MPFR 4.2:
-// mpfr_mul 14 ns at 188-192 bits, 20 ns at 220-256, 29 ns at 330-384, 34 ns at 406),
-// so the work precision is rounded up to whole limbs: those guard digits are free,
-// and a guard that spills into one more limb costs 20-40% of the whole solve.
-// Except below three limbs' worth: MPFR has special products up to 127 bits and up
-// to 187, at 7-8 ns (mpfr_mul, 168 and 184 bits); 188-192 bits take the generic
-// 14 ns. So mpfr_50's 57-digit (191-bit) work type runs at half the speed of a
-// 55-digit one, but 55 digits are short of the guard GBS needs at 50 (measured:
-// 1 - e to 47.9 digits at g = 10 instead of 50.5), hence not used.
+// NOTE: MPFR's cost goes by 64-bit limbs, not by bits, so the work precision is
+// rounded up to whole limbs: those guard digits are free. (mpfr_50's 57 digits
+// forgo MPFR's faster products below 188 bits: 55 digits are too few guard digits.)
 // Decimal digits of the widest Boost mpfr precision in as many limbs as `digits10`.
 constexpr unsigned mpfr_limb_filled_digits(unsigned digits10) {
   using boost::multiprecision::detail::digits10_2_2;
@@ -179,9 +168,8 @@ class gbs_integrator {
     // NOTE: extrapolation by precomputed Lagrange weights at h = 0 rather than the
     // Aitken-Neville tableau. Only T_{j,j} and T_{j,j} - T_{j,j-1} at the 3-4
     // columns around the target order are ever read; the tableau computes all
-    // j(j+1)/2 entries per step (3 operations each, per component: 15% of the solve at
-    // 100 digits), the weights 2(j+1) per needed column. The polynomial in h^2 through
-    // (1/n_i^2, T_{i,0}), i = lo..j, at 0 has weights
+    // j(j+1)/2 entries per step, the weights 2(j+1) per needed column. The
+    // polynomial in h^2 through (1/n_i^2, T_{i,0}), i = lo..j, at 0 has weights
     //     w_i = prod_{k != i} n_i^2 / (n_i^2 - n_k^2) = prod_{k != i} (i+1)^2 / ((i+1)^2 - (k+1)^2),
     // products of exact integer ratios, rounded once per factor in Real. The sums
     // amplify rounding by sum |w_i|, the same Lebesgue constant as the tableau.
@@ -322,8 +310,8 @@ class gbs_integrator {
         m_scratch_times[m] = t + m * m_h;
       }
       for (std::size_t i = 0; i < N; ++i) {  // d_{m+1}
-        // NOTE: product then sum, not one fused multiply-add: mpfr_fma costs about
-        // mul + add + 30% at 3-6 limbs, and its single rounding buys nothing here.
+        // NOTE: product then sum, not one fused multiply-add: mpfr_fma costs more
+        // than both, and its single rounding buys nothing here.
         m_tmp = m_two_h * m_fz[i];
         (*previous)[i] += m_tmp;
       }
@@ -346,8 +334,7 @@ class gbs_integrator {
   // common part then cancels exactly, and the weights' own rounding (about j ulps)
   // multiplies only the truncation-sized T_{i,0} - T_{j,0}, which is small exactly
   // where the weights are large. Applied to the T_{i,0} themselves it multiplied
-  // the whole increment and swamped the error estimate (measured: 15-25x the work
-  // at 50 digits from rejected steps).
+  // the whole increment and swamped the error estimate (many rejected steps).
   void weighted_sum(const std::vector<Real>& weights, bool with_base, state& out) {
     const std::size_t j = weights.size() - 1;
     for (std::size_t c = 0; c < N; ++c) {
@@ -381,8 +368,7 @@ class gbs_integrator {
   }
   // The weights of T_{j,j} and of T_{j,j} - T_{j,j-1}, computed when first needed
   // (O(j^2) operations each) and kept per thread and precision: a solve builds two
-  // integrators and needs only a handful of j, but a fresh computation per solve
-  // cost 5-10% of it at 50 digits.
+  // integrators and needs only a handful of j, too few to amortise a fresh computation.
   struct weight_cache {
     int binary_digits = -1;
     std::vector<std::vector<Real>> weights, error_weights;
@@ -440,8 +426,7 @@ class gbs_integrator {
 
   // H_j = H * 0.94 (0.65/err)^(1/(2j+1)), the factor clamped to [1/50, 4] (ODEX).
   // NOTE: the factor in double from ln(err) (err may lie outside double's range):
-  // a step needs two digits, and pow at the working precision was 7% of a solve at
-  // 50 digits.
+  // a step needs two digits, and pow at the working precision is costly.
   Real optimal_step(const Real& H, const Real& err, int j) const {
     if (err == 0) return H * 4;
     const double log_factor = (std::log(0.65) - detail::log_abs(err)) / (2 * j + 1);

@@ -41,6 +41,7 @@
 #include <viscor/core/parameters.hpp>
 #include <viscor/core/precision.hpp>
 #include <viscor/core/real_io.hpp>
+#include <viscor/core/widen.hpp>
 #include <viscor/impact/solve_impact.hpp>
 
 #include <boost/math/special_functions/fpclassify.hpp>
@@ -128,36 +129,6 @@ template <class Real>
 double to_double(const Real& x) {
   if constexpr (std::is_same_v<Real, double>) return x;
   else return std::strtod(to_decimal_string(x, 17).c_str(), nullptr);
-}
-
-// Exact widening into W (W at least as wide as Real).
-template <class W, class Real>
-W widen(const Real& x) {
-  if constexpr (std::is_same_v<W, Real>) {
-    return x;
-  }
-#if VISCOR_HAS_MPFR
-  else if constexpr (std::is_same_v<W, mpfr_real>) {
-    W y(x);
-    const unsigned wanted = W::thread_default_precision();
-    if (y.precision() < wanted) y.precision(wanted);
-    return y;
-  }
-#endif
-  else {
-    return static_cast<W>(x);
-  }
-}
-
-// Whether every value of Real converts exactly into W (at run time the working
-// precision is never below Real's, so run-time mpfr on either side qualifies).
-template <class W, class Real>
-constexpr bool can_widen() {
-  if constexpr (std::is_same_v<W, Real>) return true;
-#if VISCOR_HAS_MPFR
-  else if constexpr (std::is_same_v<W, mpfr_real> || std::is_same_v<Real, mpfr_real>) return true;
-#endif
-  else return std::numeric_limits<W>::digits >= std::numeric_limits<Real>::digits;
 }
 
 // Absolute bound `abs_bound` at value e as the requested kind of bound.
