@@ -61,7 +61,7 @@ TEST(scene_cli, rows_and_calibration_round_trip) {
   EXPECT_NE(r.out.find("impacts    3 at tolerance 1e-8"), std::string::npos) << r.out;
   const auto rows = lines_of(out);
   ASSERT_EQ(rows.size(), 4u);
-  EXPECT_EQ(rows[0], "index,v0,gamma,g,outcome,sticking,e,one_minus_e,contact_time,error_bound,method,digits,seconds");
+  EXPECT_EQ(rows[0], "index,v0,gamma,g,outcome,sticking,e,one_minus_e,contact_time,empirical_bound,method,digits,seconds");
   const auto hit = split(rows[2]);  // v0 = 0.246, where e = 0.893 was measured
   ASSERT_EQ(hit.size(), 13u);
   EXPECT_EQ(hit[1], "2.4600000000000000e-01");
@@ -183,7 +183,7 @@ TEST(scene_cli, readme_example_scene_keeps_its_bounds) {
   int checked = 0;
   for (std::size_t i = 1; i < lines.size(); ++i) {
     const auto f = split(lines[i]);
-    const double bound = std::stod(f[col("error_bound")]);
+    const double bound = std::stod(f[col("empirical_bound")]);
     ASSERT_LE(bound, 1e-4) << lines[i];
     if (i % 250 != 1) continue;
     with_working_precision(30, [&]<class Real>() {

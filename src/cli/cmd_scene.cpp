@@ -105,7 +105,7 @@ struct scene_command {
       if (!as_json) {
         csv.reserve(s.velocities.size() * 200);
         csv += std::string("index,v0,gamma,g,outcome,sticking,e,one_minus_e,contact_time,") +
-               (s.relative ? "error_bound_relative" : "error_bound") + ",method,digits,seconds\n";
+               (s.relative ? "empirical_bound_relative" : "empirical_bound") + ",method,digits,seconds\n";
       }
       run_scene(s, map ? &*map : nullptr, [&](const scene_row<Real>& row) {
         const evaluation<Real>& r = row.result;
@@ -113,7 +113,7 @@ struct scene_command {
         ++methods[to_string(r.method)];
         sticking += stuck;
         evaluation_seconds += r.seconds;
-        if (r.error_bound > worst_bound) worst_bound = r.error_bound;
+        if (r.empirical_bound > worst_bound) worst_bound = r.empirical_bound;
         const std::string t = row.contact_time ? full(*row.contact_time) : std::string();
         if (as_json) {
           json j;
@@ -121,13 +121,13 @@ struct scene_command {
           j["outcome"] = std::string(to_string(r.outcome)), j["sticking"] = stuck;
           j["e"] = full(r.e), j["one_minus_e"] = full(r.one_minus_e);
           j["contact_time"] = row.contact_time ? json(t) : json(nullptr);
-          j["error_bound"] = short_number(r.error_bound);
+          j["empirical_bound"] = short_number(r.empirical_bound);
           j["method"] = to_string(r.method), j["digits"] = r.digits, j["seconds"] = r.seconds;
           rows.push_back(std::move(j));
         } else {
           csv += std::to_string(index) + ',' + full(row.v0) + ',' + full(row.gamma) + ',' + full(row.g) + ',' +
                  std::string(to_string(r.outcome)) + ',' + (stuck ? "true" : "false") + ',' + full(r.e) + ',' +
-                 full(r.one_minus_e) + ',' + t + ',' + short_number(r.error_bound) + ',' + to_string(r.method) +
+                 full(r.one_minus_e) + ',' + t + ',' + short_number(r.empirical_bound) + ',' + to_string(r.method) +
                  ',' + std::to_string(r.digits) + ',' + seconds_text(r.seconds) + '\n';
         }
         ++index;
@@ -160,7 +160,7 @@ struct scene_command {
               << "error map  " << map_note << "\n"
               << "methods   " << method_text.str() << "\n"
               << "sticking   " << sticking << "\n"
-              << "max bound  " << to_decimal_string(worst_bound, 3) << "\n"
+              << "max empirical bound  " << to_decimal_string(worst_bound, 3) << "\n"
               << "time       " << seconds_text(total) << " s (" << seconds_text(evaluation_seconds)
               << " s evaluating, " << seconds_text(resolve_seconds) << " s resolving the scene)\n";
 

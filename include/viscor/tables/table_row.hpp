@@ -7,8 +7,11 @@
 //   1. viscor::certify (include/viscor/certify/certification.hpp): Taylor and adaptive
 //      solves at two precisions; certified digits = their agreement minus a margin.
 //   2. viscor::exact_cor: a closed form (linear law at any g; gamma = 0; beta =
-//      alpha + 1 and Tsuji at g = 0) evaluated at the working precision; its
-//      certified digits are the working digits minus 2.
+//      alpha + 1 and Tsuji at g = 0; closed_form_for decides) evaluated at the
+//      working precision; its digits are those on which e, 1 - e, T_f and u_max
+//      agree with the same closed form at 10 more digits (check_closed_form),
+//      minus 1 (at most the working digits - 2), since a formula can lose digits
+//      to its conditioning (the linear law about log10(g) at large g).
 // A point with neither is an error: no row is ever written without a certificate.
 #pragma once
 
@@ -51,15 +54,6 @@ struct point_result {
   row_source source = row_source::exact;
 };
 
-/// True if viscor::exact_cor has a closed form at (law, gamma, g); mirrors its
-/// dispatch (checked against it in reference_table_test).
-inline bool closed_form_exists(const contact_law& law, bool gamma_is_zero, bool g_is_zero) {
-  if (detail::is_rational(law.alpha, 1, 1) && detail::is_rational(law.beta, 1, 1)) return true;
-  if (gamma_is_zero) return true;
-  return g_is_zero && (detail::is_alpha_plus_one(law) ||
-                       (detail::is_rational(law.alpha, 3, 2) && detail::is_rational(law.beta, 5, 4)));
-}
-
 /// Throws invalid_parameter (before any work) if `method` cannot compute this point.
 inline void require_computable(const contact_law& law, bool gamma_is_zero, bool g_is_zero, row_method method,
                                const std::string& what) {
@@ -81,9 +75,13 @@ point_result<Real> exact_point(const contact_law& law, const Real& gamma, const 
   r.outcome = x->outcome;
   r.e = x->e, r.one_minus_e = x->one_minus_e;
   r.contact_time = x->contact_time, r.max_compression = x->max_compression;
-  // NOTE: a closed form evaluated at working precision: allow 2 digits for the
-  // rounding of the inputs and of the evaluation.
-  r.digits = std::min(working_digits, decimal_digits<Real>()) - 2;
+  // The digits each quantity has (a second evaluation at more digits), less one for
+  // rounding the row to them, and never more than the working digits - 2 (the
+  // rounding of the inputs and of the evaluation).
+  const int cap = std::min(working_digits, decimal_digits<Real>());
+  const closed_form_digits checked = check_closed_form(law, gamma, g, *x, cap);
+  r.outcome_certified = checked.outcome_agrees;
+  r.digits = std::max(0, std::min(checked.least() - 1, cap - 2));
   r.source = row_source::exact;
   return r;
 }

@@ -239,11 +239,13 @@ class time_system {
     for (auto* a : {&m_tU, &m_tV, &m_tE, &m_tA, &m_tP, &m_tdP, &m_tju}) a->assign(order + 2, 0);
     m_tinv = integer_reciprocals<tail_arithmetic>(order + 1);
     auto& t = m_tail_c;
-    t.gamma = static_cast<tail_arithmetic>(m_c.gamma);
-    t.g = static_cast<tail_arithmetic>(m_c.g);
-    t.alpha_plus_one = static_cast<tail_arithmetic>(m_c.alpha_plus_one);
-    t.beta_plus_one = static_cast<tail_arithmetic>(m_c.beta_plus_one);
-    t.two_gamma = static_cast<tail_arithmetic>(m_c.two_gamma);
+    bool ok = true;
+    t.gamma = plan::constant(m_c.gamma, ok);
+    t.g = plan::constant(m_c.g, ok);
+    t.alpha_plus_one = plan::constant(m_c.alpha_plus_one, ok);
+    t.beta_plus_one = plan::constant(m_c.beta_plus_one, ok);
+    t.two_gamma = plan::constant(m_c.two_gamma, ok);
+    m_tail_usable = ok;  // else every jet is finished in Real
     t.alpha_equals_beta = m_c.alpha_equals_beta;
     t.beta_is_one = m_c.beta_is_one;
   }
@@ -251,6 +253,7 @@ class time_system {
   // Orders split + 1 .. p of s in the tail arithmetic; false (nothing changed) when a
   // needed value leaves its range.
   bool tail(time_series<Real>& s, std::size_t split, std::size_t p) {
+    if (!m_tail_usable) return false;
     const int m = m_plan.scale_exponent({s.U, s.V});
     // orders 0 .. split (A, dP: 0 .. split - 1); dP[k] is order k of (u^beta)', times H^(k+1)
     const bool in_range = plan::down(s.U, m_tU.data(), split, m) && plan::down(s.V, m_tV.data(), split, m) &&
@@ -263,6 +266,13 @@ class time_system {
                                    m_tju.data(), &m_tinv, 1 / u0, 0, 0};
     if (m_c.alpha_equals_beta) t.A = t.P;
     time_orders<tail_arithmetic, true>(t, m_tail_c, split, p, std::ldexp(tail_arithmetic(1), m));
+    const std::size_t first = split + 1;
+    if (!plan::outputs_in_range(m_tU.data(), first, p) || !plan::outputs_in_range(m_tV.data(), first, p) ||
+        !plan::outputs_in_range(m_tE.data(), first, p))
+      return false;
+    if ((s.V[0] == 0 && !plan::all_zero(m_tV.data(), first, p)) ||
+        (s.E[0] == 0 && !plan::all_zero(m_tE.data(), first, p)))
+      return false;  // u > 0 always here
     plan::up(m_tU.data(), s.U, split + 1, p, m);
     plan::up(m_tV.data(), s.V, split + 1, p, m);
     plan::up(m_tE.data(), s.E, split + 1, p, m);
@@ -278,6 +288,7 @@ class time_system {
   std::size_t m_last_tail_start = 0;
   std::vector<tail_arithmetic> m_tU, m_tV, m_tE, m_tA, m_tP, m_tdP, m_tju, m_tinv;
   impact_constants<tail_arithmetic> m_tail_c;
+  bool m_tail_usable = false;  // every constant of the tail is 0 or a normal double
 };
 
 /// Pointers to the series of one endpoint_system jet in arithmetic T: the states,
@@ -339,6 +350,10 @@ class endpoint_system {
     if (m_plan.split() < order) {
       for (auto* a : {&m_tV, &m_tTau, &m_tE, &m_tr, &m_tJ, &m_tM, &m_tL}) a->assign(order + 2, 0);
       m_tinv = integer_reciprocals<tail_arithmetic>(order + 1);
+      bool ok = true;
+      m_tail_gamma_beta = plan::constant(c.gamma_beta, ok);
+      m_tail_two_gamma_beta = plan::constant(c.two_gamma_beta, ok);
+      m_tail_usable = ok;
     }
   }
 
@@ -420,6 +435,7 @@ class endpoint_system {
 
   // As time_system::tail. r is known to order split - 1 only.
   bool tail(endpoint_series<Real>& s, std::size_t split, std::size_t p) {
+    if (!m_tail_usable) return false;
     const int m = m_plan.scale_exponent({s.V, s.Tau});
     const bool in_range = plan::down(s.V, m_tV.data(), split, m) && plan::down(s.Tau, m_tTau.data(), split, m) &&
                           plan::down(s.E, m_tE.data(), split, m) && plan::down(s.r, m_tr.data(), split - 1, m) &&
@@ -429,9 +445,16 @@ class endpoint_system {
     if (!in_range || !std::isnormal(m_tV[0])) return false;
     endpoint_series<tail_arithmetic> t{m_tV.data(), m_tTau.data(), m_tE.data(), m_tr.data(), m_tJ.data(),
                                        m_tM.data(), m_tL.data(), s.deg_J, s.deg_M, s.deg_L, &m_tinv,
-                                       static_cast<tail_arithmetic>(s.gamma_beta),
-                                       static_cast<tail_arithmetic>(s.two_gamma_beta), 0};
+                                       m_tail_gamma_beta, m_tail_two_gamma_beta, 0};
     endpoint_orders<tail_arithmetic, true>(t, split, p, std::ldexp(tail_arithmetic(1), m));
+    const std::size_t first = split + 1;
+    if (!plan::outputs_in_range(m_tV.data(), first, p) || !plan::outputs_in_range(m_tTau.data(), first, p) ||
+        !plan::outputs_in_range(m_tE.data(), first, p))
+      return false;
+    // tau and D are 0 at the start of contact: their step scale |x0| is 0 there.
+    if ((s.Tau[0] == 0 && !plan::all_zero(m_tTau.data(), first, p)) ||
+        (s.E[0] == 0 && !plan::all_zero(m_tE.data(), first, p)))
+      return false;
     plan::up(m_tV.data(), s.V, split + 1, p, m);
     plan::up(m_tTau.data(), s.Tau, split + 1, p, m);
     plan::up(m_tE.data(), s.E, split + 1, p, m);
@@ -447,6 +470,8 @@ class endpoint_system {
   plan m_plan;
   std::size_t m_last_tail_start = 0;
   std::vector<tail_arithmetic> m_tV, m_tTau, m_tE, m_tr, m_tJ, m_tM, m_tL, m_tinv;
+  tail_arithmetic m_tail_gamma_beta = 0, m_tail_two_gamma_beta = 0;
+  bool m_tail_usable = false;  // gamma beta, 2 gamma beta are 0 or normal doubles
 };
 
 template <class Real>
