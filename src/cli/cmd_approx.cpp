@@ -56,7 +56,9 @@ struct approx_command {
     text << "law          " << model.describe() << "\n"
          << "surrogate    e = " << number(v.e) << ", 1 - e = " << number(v.one_minus_e) << " (" << to_string(v.outcome)
          << ")\n"
-         << "error bound  |de| <= " << s->bound.abs_e << " (e >= 1e-2), |de^2| <= " << s->bound.abs_e_squared
+         << (s->bound.verified() ? "" : "error bound  none: this surrogate file was never verified\n");
+    if (s->bound.verified())
+      text << "error bound  |de| <= " << s->bound.abs_e << " (e >= 1e-2), |de^2| <= " << s->bound.abs_e_squared
          << ", relative d(1 - e) <= " << s->bound.rel_one_minus_e << " (gamma <= 1e-2)\n"
          << "             (measured maximum over the certified verification points x " << s->bound.safety_factor << ")\n";
     output.emit(text.str(), j);

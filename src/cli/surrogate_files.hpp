@@ -40,6 +40,7 @@ inline const surrogate::cor_surrogate* find_surrogate(const contact_law& law) {
 
 /// error_bound of a surrogate value: what is claimed and what the claim is.
 inline json surrogate_bound_json(const surrogate::cor_surrogate& s) {
+  if (!s.bound.verified()) return {{"kind", "none: this surrogate file was never verified (no bound is claimed)"}};
   return {{"kind", "measured maximum over the certified verification points x safety factor"},
           {"safety_factor", s.bound.safety_factor},
           {"abs_e", s.bound.abs_e},

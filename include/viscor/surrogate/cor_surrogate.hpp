@@ -175,7 +175,8 @@ struct cor_surrogate {
       const double c = (a * fb - b * fa) / (fb - fa);
       if (!(c > a && c < b)) return c == a || c == b ? c : (a + b) / 2;
       const double fc = f(c);
-      if (fc == 0) return c;
+      // |f| is the error in 1 - e^2: 4 eps of it is below what the fit carries.
+      if (std::abs(fc) <= 4 * std::numeric_limits<double>::epsilon()) return c;
       if (fc < 0) {
         a = c, fa = fc;
         if (side == -1) fb /= 2;  // Illinois: the same end twice, halve the other's weight
