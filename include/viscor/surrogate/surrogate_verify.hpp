@@ -64,7 +64,7 @@ inline std::vector<verification_point> draw_verification_points(const cor_surrog
         }
         break;
       case 3:  // large loads
-        p.g = log_uniform(100, g_top);
+        p.g = log_uniform(std::min(100.0, g_top / 10), g_top);  // stays inside a smaller domain too
         p.gamma = log_uniform(1e-10, s.gamma_max);
         break;
       default:  // pulling loads
