@@ -13,6 +13,7 @@ packages=(
   libcli11-dev              # command line
   nlohmann-json3-dev        # JSON output and sidecars
   python3-matplotlib        # tools/plot_reference.py figures
+  doxygen                   # API reference: cmake --build build --target doc (issue 13)
 )
 
 missing=()
