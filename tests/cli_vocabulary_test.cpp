@@ -69,7 +69,7 @@ TEST(CliVocabulary, PhysicalModeWithoutGravityIsRefused) {
   // 0 is a value the user types.
   const auto r = run_cli(std::string("cor ") + bead + " --gamma0 1.6e-6 --gravity 0 --json");
   ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_EQ(nlohmann::json::parse(r.out)["g"], "0.00000000000000000e+00");
+  EXPECT_EQ(std::stod(nlohmann::json::parse(r.out)["g"].get<std::string>()), 0.0);
 }
 
 // The schema's names and units: rows "| `name` | meaning | unit |".
@@ -244,7 +244,7 @@ TEST(CliVocabulary, OutputFileEndingInJsonHoldsTheJsonForm) {
 TEST(CliVocabulary, SceneErrorMapsMustExist) {
   if (!cli_built()) GTEST_SKIP() << "viscor CLI not built";
   const std::string file = write_file("a_file.csv", "not a directory\n");
-  for (const std::string maps : {std::string("\"no_such_directory\""), "\"viscor_vocab_a_file.csv\""}) {
+  for (const std::string maps : {std::string("\"no_such_directory\""), std::string("\"viscor_vocab_a_file.csv\"")}) {
     SCOPED_TRACE(maps);
     const std::string scene = write_file("maps_scene.json", R"({
       "law": "tsuji", "bead": {"m": 1e-3, "k": 1e6}, "damping": {"gamma0": 1e-2},
