@@ -115,7 +115,7 @@ TEST(certification, schwager_poschel_coefficients_from_certified_e) {
   // with (39), (40)). f(gamma) = (1 - e)/gamma from certified 1 - e at gamma = i * 1e-8,
   // i = 1..5; the degree-4 interpolant gives C0 = f(0) and C2 = f'(0) (error ~ 1e-32).
   // Expected values: the closed forms after eq. (40), evaluated independently (the
-  // report's printed c1 = -1.15448854 has two digits swapped, see ERRATA.md).
+  // report's printed c1 = -1.15448854 has two digits swapped, see docs/report-notes.md).
   using R = mpfr_50;
   const R C0("1.730173287142933198695851158"), C2("-1.796099762125789664063");
   const contact_law kk = law_by_name("kuwabara_kono");

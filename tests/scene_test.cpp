@@ -82,7 +82,7 @@ TEST(scene, resolution_errors_name_the_field) {
   d.density.reset(), d.radius.reset(), d.youngs_modulus.reset(), d.poisson_ratio.reset();
   EXPECT_NE(message(d).find("missing field bead"), std::string::npos) << message(d);
   d.mass = "-1", d.stiffness = "1e9";
-  EXPECT_NE(message(d).find("bead.mass must be > 0"), std::string::npos) << message(d);
+  EXPECT_NE(message(d).find("bead.m must be > 0"), std::string::npos) << message(d);
 }
 
 // Acceptance: calibrate gamma0 from e, evaluate with that gamma0, get e back.

@@ -196,7 +196,9 @@ void setup(CLI::App& app) {
       ->capture_default_str();
   app.add_option("--source", cmd->source, "Prop. 2 coefficients: all, exact_at_zero, numeric or chebyshev_beta")
       ->capture_default_str();
-  app.add_option("--order", cmd->order, "odd order n of the Chebyshev-Beta approximation")->capture_default_str();
+  app.add_option("--order", cmd->order, "odd order n of the Chebyshev-Beta approximation, 1 to 999")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 999));
   app.add_option("--digits", cmd->digits, "working precision in decimal digits")->capture_default_str();
   app.callback([cmd] { cmd->run(); });
 }

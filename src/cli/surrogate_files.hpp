@@ -1,9 +1,10 @@
-// Where the CLI finds the committed surrogates: $VISCOR_SURROGATE_DIR, else the
-// source tree's reference_data/surrogates (compiled in by CMake), and the JSON of
-// a surrogate evaluation (docs/surrogate.md).
+// Where the CLI finds the committed surrogates: $VISCOR_SURROGATE_DIR, else
+// <data directory>/surrogates (data_directory.hpp: installed share/viscor or the
+// source tree's reference_data), and the JSON of a surrogate evaluation (docs/surrogate.md).
 #pragma once
 
 #include "cli_common.hpp"
+#include "data_directory.hpp"
 
 #include <viscor/surrogate/cor_surrogate.hpp>
 
@@ -17,11 +18,7 @@ namespace viscor::cli {
 
 inline std::string surrogate_directory() {
   if (const char* dir = std::getenv("VISCOR_SURROGATE_DIR"); dir && *dir) return dir;
-#ifdef VISCOR_SURROGATE_DEFAULT_DIR
-  return VISCOR_SURROGATE_DEFAULT_DIR;
-#else
-  return "reference_data/surrogates";
-#endif
+  return data_directory() + "/surrogates";
 }
 
 /// The committed surrogate of a named law, or nullptr (custom law, or no file).
