@@ -13,7 +13,9 @@
 
 #include <algorithm>
 #include <optional>
+#include <string>
 #include <type_traits>
+#include <utility>
 
 namespace viscor {
 
@@ -105,19 +107,26 @@ int optional_agreement(const std::optional<Real>& a, const std::optional<V>& b, 
 }
 }  // namespace detail
 
+/// Decimal texts of gamma and g, when x was computed from them rounded to Real.
+using decimal_inputs = std::optional<std::pair<std::string, std::string>>;
+
 /// The digits of x = exact_cor<Real>(law, gamma, g), capped at `cap`, checked by
 /// exact_cor at cap + 10 digits (in mpfr_real, or the cheapest type that carries
-/// them) from gamma and g converted exactly.
+/// them) from gamma and g converted exactly, or, given `inputs`, from the decimal
+/// numbers they were rounded from: then the rounding of the inputs counts too (near
+/// critical damping e = exp(-pi xi/sqrt(1 - xi^2)) is very sensitive to gamma).
 template <class Real>
 closed_form_digits check_closed_form(const contact_law& law, const Real& gamma, const Real& g,
-                                     const exact_result<Real>& x, int cap) {
+                                     const exact_result<Real>& x, int cap, const decimal_inputs& inputs = std::nullopt) {
   return with_working_precision(std::max(cap, decimal_digits<Real>()) + 10, [&]<class V>() {
     closed_form_digits d;
     if constexpr (has_fixed_precision<V>() && has_fixed_precision<Real>() &&
                   std::numeric_limits<V>::digits < std::numeric_limits<Real>::digits) {
       return d;  // unreachable: V carries more digits than Real
     } else {
-      const std::optional<exact_result<V>> y = exact_cor(law, detail::exactly_as<V>(gamma), detail::exactly_as<V>(g));
+      const V vg = inputs ? parse_real<V>(inputs->first, "gamma") : detail::exactly_as<V>(gamma);
+      const V vgg = inputs ? parse_real<V>(inputs->second, "g") : detail::exactly_as<V>(g);
+      const std::optional<exact_result<V>> y = exact_cor(law, vg, vgg);
       if (!y || y->outcome != x.outcome) return d;
       d.outcome_agrees = true;
       if (x.outcome == impact_outcome::stick) {

@@ -66,7 +66,8 @@ inline void require_computable(const contact_law& law, bool gamma_is_zero, bool 
 namespace detail {
 
 template <class Real>
-point_result<Real> exact_point(const contact_law& law, const Real& gamma, const Real& g, int working_digits) {
+point_result<Real> exact_point(const contact_law& law, const Real& gamma, const Real& g, int working_digits,
+                               const decimal_inputs& inputs) {
   const std::optional<exact_result<Real>> x = exact_cor(law, gamma, g);
   if (!x)
     throw invalid_parameter("no closed form exists for " + law.describe() + " at gamma = " +
@@ -79,7 +80,7 @@ point_result<Real> exact_point(const contact_law& law, const Real& gamma, const 
   // rounding the row to them, and never more than the working digits - 2 (the
   // rounding of the inputs and of the evaluation).
   const int cap = std::min(working_digits, decimal_digits<Real>());
-  const closed_form_digits checked = check_closed_form(law, gamma, g, *x, cap);
+  const closed_form_digits checked = check_closed_form(law, gamma, g, *x, cap, inputs);
   r.outcome_certified = checked.outcome_agrees;
   r.digits = std::max(0, std::min(checked.least() - 1, cap - 2));
   r.source = row_source::exact;
@@ -105,14 +106,16 @@ point_result<Real> certified_point(const contact_law& law, const Real& gamma, co
 /// The certified result at (law, gamma, g) in the working type Real, by the
 /// method of `settings` (see the header comment). Throws invalid_parameter for
 /// a point the method cannot certify.
+/// `inputs`: the decimal texts gamma and g were rounded from (a table row's), so
+/// that a closed-form row's digits account for that rounding too.
 template <class Real>
 point_result<Real> evaluate_point(const contact_law& law, const Real& gamma, const Real& g,
-                                  const table_settings& settings) {
+                                  const table_settings& settings, const decimal_inputs& inputs = std::nullopt) {
   impact_parameters<Real>{law, gamma, g}.validate();
   require_computable(law, gamma == 0, g == 0, settings.method,
                      "point gamma = " + to_decimal_string(gamma) + ", g = " + to_decimal_string(g));
   if (settings.method != row_method::exact) return detail::certified_point(law, gamma, g);
-  return detail::exact_point(law, gamma, g, settings.digits);
+  return detail::exact_point(law, gamma, g, settings.digits, inputs);
 }
 
 /// x rounded to `digits` significant digits: "0" for zero, "inf" for infinity.
@@ -157,7 +160,7 @@ table_row make_row(const grid_point& p, const point_result<Real>& r) {
 inline table_row compute_row(const grid_point& p, const table_settings& settings) {
   return with_working_precision(settings.digits, [&]<class Real>() -> table_row {
     const Real gamma = parse_real<Real>(p.gamma, "gamma"), g = parse_real<Real>(p.g, "g");
-    const point_result<Real> r = evaluate_point(p.law, gamma, g, settings);
+    const point_result<Real> r = evaluate_point(p.law, gamma, g, settings, decimal_inputs{{p.gamma, p.g}});
     const std::string where = "row " + std::to_string(p.index) + " (" + p.law.describe() + ", gamma = " + p.gamma +
                               ", g = " + p.g + ")";
     if (!r.outcome_certified)
