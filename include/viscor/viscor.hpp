@@ -39,3 +39,17 @@
 #include <viscor/approx/u_max.hpp>
 #include <viscor/config.hpp>
 #include <viscor/certify/extern_templates.hpp>
+
+/// @namespace viscor
+/// The coefficient of restitution of a bead hitting a wall under a constant load,
+/// for visco-elastic contact laws: exact and approximate solutions, two independent
+/// integrators, certification, reference tables, scenes and calibration.
+/// docs/architecture.md maps the layers (one folder of include/viscor per layer).
+
+/// @namespace viscor::dem
+/// The DEM bridge: damping parameters in the conventions of LAMMPS and LIGGGHTS
+/// (docs/dem.md).
+
+/// @namespace viscor::surrogate
+/// Fitted double-precision surrogates of e(gamma, g) per contact law, with measured
+/// bounds (docs/surrogate.md).

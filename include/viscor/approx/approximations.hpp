@@ -43,6 +43,7 @@ enum class coefficient_source {
 inline constexpr std::array<coefficient_source, 3> coefficient_sources{
     coefficient_source::exact_at_zero, coefficient_source::numeric, coefficient_source::chebyshev_beta};
 
+/// The source's name as in the CLI's --source and in JSON.
 inline std::string_view to_string(coefficient_source s) {
   switch (s) {
     case coefficient_source::exact_at_zero: return "exact_at_zero";
@@ -89,13 +90,17 @@ class cor_approximations {
     m_kuwabara_kono = alpha == Real(3) / 2 && beta == Real(3) / 2;
     if (m_kuwabara_kono) m_c2_sp = schwager_poschel_C2<Real>();
   }
+  /// The approximations of `law` (validated); `chebyshev_order` as for chebyshev_beta.
   explicit cor_approximations(const contact_law& law, int chebyshev_order = 21)
       : cor_approximations((law.validate(), law.alpha.value<Real>()), law.beta.value<Real>(), chebyshev_order) {
     m_law_name = law.describe();
   }
 
+  /// The closed-form coefficients (I0, Q0, C0, C1, C, p, C2) behind eqs. (22)-(23).
   const closed_form_coefficients<Real>& closed_forms() const noexcept { return m_closed; }
+  /// The Chebyshev-Beta scheme behind Prop. 2 with chebyshev_beta coefficients.
   const chebyshev_beta<Real>& scheme() const noexcept { return m_scheme; }
+  /// Whether the law is Kuwabara-Kono (3/2, 3/2), the only law Schwager-Poeschel applies to.
   bool is_kuwabara_kono() const noexcept { return m_kuwabara_kono; }
 
   /// Eq. (22): 1 - gamma C0 - gamma g C1 (any finite g; linear, may be negative).

@@ -121,6 +121,7 @@ Real m_closed_form(const Real& alpha, const Real& beta, const Real& theta) {
 template <class Real>
 class chebyshev_beta {
  public:
+  /// The scheme of order n (a positive odd integer; throws invalid_parameter otherwise).
   explicit chebyshev_beta(int n = 21) : m_n(n) {
     if (n <= 0 || n % 2 == 0)
       throw invalid_parameter("Chebyshev-Beta order n must be a positive odd integer, got n = " + std::to_string(n));
@@ -146,6 +147,7 @@ class chebyshev_beta {
       }
   }
 
+  /// The order n of the scheme.
   int order() const noexcept { return m_n; }
 
   /// c_j of eq. (50) for even j = 0, 2, ..., n-1 (entry j/2); theta in [0, 1].
@@ -191,6 +193,7 @@ class chebyshev_beta {
   struct m_and_j {
     Real m, j;
   };
+  /// M and J at (alpha, beta, theta); throws invalid_parameter for an exponent < 1.
   m_and_j approximate(const Real& alpha, const Real& beta, const Real& theta) const {
     detail::require_exponent(alpha, "alpha");
     detail::require_exponent(beta, "beta");
@@ -285,6 +288,7 @@ struct approximated_integrals {
   Real theta, I, Q;
 };
 
+/// theta(g) and I(g), Q(g) approximated by the Chebyshev-Beta scheme (45), (46) for exponents (alpha, beta).
 template <class Real>
 approximated_integrals<Real> chebyshev_beta_integrals(const chebyshev_beta<Real>& scheme, const Real& alpha,
                                                       const Real& beta, const Real& g) {

@@ -157,6 +157,7 @@ struct closed_form_coefficients {
   Real p;       ///< exponent of g in eq. (23)
   Real C2;      ///< C2 at g = 0, after eq. (40)
 
+  /// All coefficients for exponents (alpha, beta), computed once.
   closed_form_coefficients(const Real& alpha_, const Real& beta_)
       : alpha(alpha_),
         beta(beta_),
@@ -169,28 +170,37 @@ struct closed_form_coefficients {
         p(large_g_exponent(alpha_, beta_)),
         C2(coefficient_C2_at_zero(alpha_, beta_)) {}
 
+  /// All coefficients for a validated law.
   explicit closed_form_coefficients(const contact_law& law)
       : closed_form_coefficients((law.validate(), law.alpha.value<Real>()), law.beta.value<Real>()) {}
 };
 
 // Contact-law overloads.
+/// I(0) of a validated law.
 template <class Real>
 Real integral_I_at_zero(const contact_law& law) { return closed_form_coefficients<Real>(law).I0; }
+/// Q(0) of a validated law.
 template <class Real>
 Real integral_Q_at_zero(const contact_law& law) { return closed_form_coefficients<Real>(law).Q0; }
+/// C0 of eq. (22) for a validated law.
 template <class Real>
 Real coefficient_C0(const contact_law& law) { return closed_form_coefficients<Real>(law).C0; }
+/// C1 of eq. (22) for a validated law.
 template <class Real>
 Real coefficient_C1(const contact_law& law) { return closed_form_coefficients<Real>(law).C1; }
+/// C of eq. (23) for a validated law.
 template <class Real>
 Real coefficient_C(const contact_law& law) { return closed_form_coefficients<Real>(law).C; }
+/// C2 at g = 0 for a validated law.
 template <class Real>
 Real coefficient_C2_at_zero(const contact_law& law) { return closed_form_coefficients<Real>(law).C2; }
+/// The approximate sticking threshold g_c(gamma) of a validated law (see the exponent overload).
 template <class Real>
 Real critical_g(const contact_law& law, const Real& gamma) {
   law.validate();
   return critical_g(law.alpha.value<Real>(), law.beta.value<Real>(), gamma);
 }
+/// The approximate sticking threshold gamma_c(g) of a validated law (see the exponent overload).
 template <class Real>
 Real critical_gamma(const contact_law& law, const Real& g) {
   law.validate();

@@ -225,13 +225,16 @@ Real integral_dI_dg(const Real& alpha, const Real& beta, const Real& g) {
 }
 
 // Contact-law overloads.
+/// I(g) and Q(g) by quadrature for a validated law.
 template <class Real>
 integral_values<Real> integrals_IQ(const contact_law& law, const Real& g) {
   law.validate();
   return integrals_IQ(law.alpha.value<Real>(), law.beta.value<Real>(), g);
 }
+/// I(g) by quadrature for a validated law.
 template <class Real>
 Real integral_I(const contact_law& law, const Real& g) { return integrals_IQ(law, g).I; }
+/// Q(g) by quadrature for a validated law.
 template <class Real>
 Real integral_Q(const contact_law& law, const Real& g) { return integrals_IQ(law, g).Q; }
 

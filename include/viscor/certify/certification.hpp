@@ -51,6 +51,7 @@ namespace viscor {
 /// Which computation a certificate entry is.
 enum class certified_source { taylor, taylor_reference, adaptive };
 
+/// The source's name as written in tables and JSON.
 inline std::string_view to_string(certified_source s) {
   switch (s) {
     case certified_source::taylor: return "taylor";

@@ -69,6 +69,7 @@ class exponent {
     return e;
   }
 
+  /// Whether the exponent is an exact rational p/q (else a decimal that is not one).
   bool is_rational() const noexcept { return !m_decimal.has_value(); }
   std::int64_t numerator() const noexcept { return m_num; }      ///< valid when is_rational()
   std::int64_t denominator() const noexcept { return m_den; }    ///< valid when is_rational()
@@ -172,6 +173,7 @@ inline contact_law make_law(exponent alpha, exponent beta) {
   return law;
 }
 
+/// A named contact law: its CLI name, exponents alpha = alpha_num/alpha_den, beta = beta_num/beta_den, and a short description.
 struct named_law {
   std::string_view name;
   std::int64_t alpha_num, alpha_den, beta_num, beta_den;

@@ -14,8 +14,10 @@ enum class integration_method {
   adaptive,  ///< the independent high-order adaptive method (issue 4)
 };
 
+/// "taylor" or "adaptive", as in the CLI's --method.
 inline std::string_view to_string(integration_method m) { return m == integration_method::taylor ? "taylor" : "adaptive"; }
 
+/// How solve_impact integrates: the method, the step tolerance and the step budget.
 template <class Real>
 struct solve_options {
   integration_method method = integration_method::taylor;
@@ -25,6 +27,7 @@ struct solve_options {
   std::size_t max_steps = 1'000'000;
 };
 
+/// What solve_impact found: the outcome, e and 1 - e, the contact time, the maximal compression, an error estimate and the cost.
 template <class Real>
 struct impact_result {
   Real e = 0;            ///< coefficient of restitution -u'(T_f), or 0 when the bead sticks

@@ -10,6 +10,7 @@ namespace viscor {
 /// criterion it uses: viscor ends contact at zero overlap u = 0, as the report does.
 enum class impact_outcome { rebound, stick };
 
+/// The outcome's name as written in tables and JSON.
 inline std::string_view to_string(impact_outcome o) { return o == impact_outcome::rebound ? "rebound" : "stick"; }
 
 }  // namespace viscor

@@ -39,6 +39,7 @@ struct impact_parameters {
   Real gamma = 0;  ///< scaled damping, >= 0
   Real g = 0;      ///< scaled load (any sign: g < 0 pulls the bead away)
 
+  /// Throws invalid_parameter naming the first invalid field (law, gamma >= 0, finite g).
   void validate() const {
     law.validate();
     require_non_negative(gamma, "gamma");

@@ -16,6 +16,7 @@ inline constexpr int max_working_digits = 100000;
 /// The scalar type used for a request of `digits` decimal digits.
 enum class scalar_kind { double_, long_double, quad, mpfr };
 
+/// The scalar type's name as printed by the CLI.
 inline std::string to_string(scalar_kind k) {
   switch (k) {
     case scalar_kind::double_: return "double";

@@ -82,6 +82,7 @@ Real parse_real(const std::string& text, const std::string& name) {
 /// every fixed-precision type.
 class scoped_precision {
  public:
+  /// Sets the precision to `decimal_digits_wanted` digits until the end of the scope.
   explicit scoped_precision(int decimal_digits_wanted) {
 #if VISCOR_HAS_MPFR
     m_saved = mpfr_real::thread_default_precision();

@@ -20,6 +20,7 @@ struct physical_parameters {
   Real gravity = 0;  ///< gravitational acceleration towards the wall, m/s^2
   Real force = 0;    ///< constant external force F, N; F > 0 presses the bead on the wall
 
+  /// Throws invalid_parameter naming the first invalid field.
   void validate() const {
     require_positive(m, "m");
     require_positive(k, "k");

@@ -11,11 +11,13 @@
 
 namespace viscor::dem {
 
+/// The deck values as the exact decimal strings written into the DEM input.
 struct deck_strings {
   std::string youngs_modulus, poisson_ratio, damping;
   std::optional<std::string> wall_youngs_modulus;  ///< LIGGGHTS wall type
 };
 
+/// A ready-to-paste input snippet of the model's code with the deck values `d`.
 inline std::string deck_snippet(const dem_model& model, contact_kind kind, const deck_strings& d) {
   const std::string damping_name(model.damping_name);
   std::string s;

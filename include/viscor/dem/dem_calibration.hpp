@@ -22,6 +22,7 @@
 
 namespace viscor::dem {
 
+/// One impact as a DEM code sees it: the bead's material, its speed, the load and the contact.
 template <class Real>
 struct dem_impact {
   bead_material<Real> bead;
@@ -54,6 +55,7 @@ impact_result<Real> e_for_deck(const dem_model& model, const dem_impact<Real>& i
   return solve_impact(law, s.gamma, s.g, options);
 }
 
+/// The values to write into a DEM code's contact-model input, and what they reproduce.
 template <class Real>
 struct dem_deck {
   Real youngs_modulus = 0;  ///< deck E (or Y) of the bead

@@ -33,6 +33,7 @@ enum class deck_damping_kind {
   coefficient_of_restitution,  ///< an e that the code turns into damping by its own formula
 };
 
+/// A DEM code's damping model: which code, its name there, the force law it means and what its damping input is.
 struct dem_model {
   dem_code code;
   damping_model damping;
@@ -83,6 +84,7 @@ inline const dem_model& find_dem_model(const std::string& code, const std::strin
   throw invalid_parameter("unknown damping model '" + damping + "' for " + code + ": expected one of " + names);
 }
 
+/// viscor's contact law with the model's exponents.
 inline contact_law law_of(const dem_model& m) { return law_by_name(m.law_name); }
 
 }  // namespace viscor::dem

@@ -21,8 +21,10 @@ namespace viscor::dem {
 /// What the bead hits.
 enum class contact_kind { wall, pair };
 
+/// "wall" or "pair", as in --contact.
 inline std::string_view to_string(contact_kind kind) { return kind == contact_kind::wall ? "wall" : "pair"; }
 
+/// Parses "wall" or "pair"; throws invalid_parameter naming `text` otherwise.
 inline contact_kind parse_contact_kind(const std::string& text) {
   if (text == "wall") return contact_kind::wall;
   if (text == "pair") return contact_kind::pair;
@@ -37,6 +39,7 @@ struct bead_material {
   Real radius = 0;          ///< R, m
   Real density = 0;         ///< rho, kg/m^3
 
+  /// Throws invalid_parameter naming the first invalid field.
   void validate() const {
     require_positive(youngs_modulus, "youngs_modulus");
     require_finite(poisson_ratio, "poisson_ratio");
@@ -46,6 +49,7 @@ struct bead_material {
     require_positive(density, "density");
   }
 
+  /// The bead's mass 4/3 pi R^3 rho, kg.
   Real mass() const {
     return 4 * boost::math::constants::pi<Real>() * radius * radius * radius * density / 3;
   }
@@ -63,6 +67,7 @@ struct hertz_contact {
   Real stiffness = 0;          ///< k = (4/3) E* sqrt(R*), N/m^(3/2)
 };
 
+/// The Hertz contact of a bead (validated) with a rigid wall or an identical bead: E*, R*, m* and k.
 template <class Real>
 hertz_contact<Real> make_hertz_contact(const bead_material<Real>& bead, contact_kind kind) {
   using std::sqrt;

@@ -8,6 +8,7 @@
 
 namespace viscor {
 
+/// A closed-form impact: e, 1 - e, the contact time and the maximal compression.
 template <class Real>
 struct exact_result {
   Real e = 0;            ///< coefficient of restitution

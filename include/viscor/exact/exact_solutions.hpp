@@ -81,6 +81,7 @@ std::optional<exact_result<Real>> exact_cor(const contact_law& law, const Real& 
 struct closed_form_digits {
   bool outcome_agrees = false;  ///< false: the check found the other outcome (0 digits)
   int e = 0, one_minus_e = 0, contact_time = 0, max_compression = 0;
+  /// The fewest digits over the four quantities (0 when the outcome disagrees).
   int least() const { return outcome_agrees ? std::min({e, one_minus_e, contact_time, max_compression}) : 0; }
 };
 

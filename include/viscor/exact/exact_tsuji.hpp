@@ -13,6 +13,7 @@
 
 namespace viscor {
 
+/// The exact impact of the Tsuji law at g = 0 (see the header comment); throws invalid_parameter for gamma < 0.
 template <class Real>
 exact_result<Real> exact_tsuji(const Real& gamma) {
   require_non_negative(gamma, "gamma");

@@ -187,6 +187,7 @@ class gbs_integrator {
  public:
   using state = std::array<Real, N>;
 
+  /// An integrator for relative tolerance rtol, absolute tolerances atol, at most max_columns extrapolation columns (>= 2).
   gbs_integrator(const Real& rtol, const state& atol, int max_columns)
       : m_rtol(rtol), m_atol(atol), m_max_columns(std::max(max_columns, 2)) {
     // Start near the order the tolerance needs: about digits/4 + 4 columns.
@@ -217,10 +218,13 @@ class gbs_integrator {
 
   /// Current target column index (order 2 * columns + 2).
   int columns() const { return m_columns; }
+  /// Sets the target column index, clamped to [2, max_columns()].
   void set_columns(int k) { m_columns = std::clamp(k, 2, m_max_columns); }
+  /// The largest column index allowed.
   int max_columns() const { return m_max_columns; }
   /// Column index and scaled error estimate (<= 1) of the last accepted step.
   int last_columns() const { return m_last_columns; }
+  /// The scaled error estimate (<= 1) of the last accepted step.
   const Real& last_error() const { return m_last_error; }
   /// Absolute error estimate per component of the last accepted step.
   const state& last_error_vector() const { return m_last_error_vector; }
@@ -229,6 +233,7 @@ class gbs_integrator {
   /// States at the nodes t + m H/n (m = 0..n) of the finest midpoint column of
   /// the last accepted step (O(h^2)-accurate: for event detection, not output).
   const std::vector<state>& nodes() const { return m_nodes; }
+  /// The times of nodes().
   const std::vector<Real>& node_times() const { return m_node_times; }
 
   /// Attempts one step of signed length h from (t, y). On success advances t, y

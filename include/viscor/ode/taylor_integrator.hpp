@@ -35,11 +35,16 @@ namespace viscor {
 template <class Real>
 class taylor_jet {
  public:
+  /// Zeroed coefficients of `size` series up to `order`.
   taylor_jet(std::size_t size, std::size_t order)
       : m_size(size), m_order(order), m_stride(order + 2), m_data(size * (order + 2), Real(0)) {}
+  /// The coefficients of series i (order() + 2 of them).
   Real* operator[](std::size_t i) { return m_data.data() + i * m_stride; }
+  /// The coefficients of series i (order() + 2 of them).
   const Real* operator[](std::size_t i) const { return m_data.data() + i * m_stride; }
+  /// The number of series.
   std::size_t size() const noexcept { return m_size; }
+  /// The highest order stored (one spare above it).
   std::size_t order() const noexcept { return m_order; }
 
  private:
@@ -55,11 +60,13 @@ std::size_t taylor_order(const Real& tolerance) {
   const Real p = ceil(-log(tolerance) / 2 + 1);
   return p < 2 ? std::size_t(2) : static_cast<std::size_t>(p.template convert_to<long long>());
 }
+/// taylor_order for double, without multiprecision conversions.
 template <>
 inline std::size_t taylor_order<double>(const double& tolerance) {
   const double p = std::ceil(-std::log(tolerance) / 2 + 1);
   return p < 2 ? 2 : static_cast<std::size_t>(p);
 }
+/// taylor_order for long double.
 template <>
 inline std::size_t taylor_order<long double>(const long double& tolerance) {
   const long double p = std::ceil(-std::log(tolerance) / 2 + 1);
@@ -87,9 +94,11 @@ concept taylor_system_with_tail = requires(const System& system) {
   { system.tail_log_bound() } -> std::convertible_to<double>;
 };
 
+/// Fixed-order Taylor steps of a taylor_system with the Jorba-Zou order and step rules.
 template <class Real, taylor_system<Real> System>
 class taylor_integrator {
  public:
+  /// An integrator of `system` (kept by reference) at relative tolerance `tolerance` per step.
   taylor_integrator(System& system, const Real& tolerance)
       : m_system(system),
         m_tolerance(tolerance),
@@ -99,10 +108,15 @@ class taylor_integrator {
     m_log_safety = -0.7 / static_cast<double>(m_order - 1) - 2;
   }
 
+  /// The Taylor order, taylor_order(tolerance()).
   std::size_t order() const noexcept { return m_order; }
+  /// The system integrated.
   const System& system() const noexcept { return m_system; }
+  /// The relative tolerance per step.
   const Real& tolerance() const noexcept { return m_tolerance; }
+  /// The Taylor coefficients of the last step's expansion point.
   taylor_jet<Real>& jet() noexcept { return m_jet; }
+  /// The Taylor coefficients of the last step's expansion point.
   const taylor_jet<Real>& jet() const noexcept { return m_jet; }
 
   /// Loads the state x at t0, computes its Taylor expansion and returns the

@@ -48,6 +48,7 @@ struct unreachable_target : invalid_parameter {
   using invalid_parameter::invalid_parameter;
 };
 
+/// How calibrate_gamma and calibrate_gamma0 search: tolerance on e, bracket limit, solver options.
 template <class Real>
 struct calibration_options {
   /// Absolute tolerance on e; 0: 10^5 epsilon<Real>() (the Taylor solve's own
@@ -59,6 +60,7 @@ struct calibration_options {
   solve_options<Real> solve{};
 };
 
+/// The calibrated scaled damping with its bracket and the miss of the target.
 template <class Real>
 struct calibration_result {
   Real gamma = 0;    ///< the calibrated scaled damping
@@ -69,6 +71,7 @@ struct calibration_result {
   int solves = 0;    ///< solve_impact calls
 };
 
+/// A calibration in physical units: gamma0 and the scaled calibration behind it.
 template <class Real>
 struct physical_calibration {
   Real gamma0 = 0;  ///< calibrated physical damping coefficient

@@ -6,7 +6,7 @@
 // File format (reference_data/error_maps/<law>.csv, format 1): '#' lines first,
 // "# key=value" for the metadata (law, alpha, beta, safety_factor, floor, and
 // free-text provenance: reference, command); then a CSV header and one row per cell:
-//   gamma_lo,gamma_hi,g_lo,g_hi,samples,outcome,small_g,large_g,schwager_poschel,prop2_chebyshev,prop2_numeric
+//   gamma_lo,gamma_hi,g_lo,g_hi,samples,outcome,small_g,large_g,schwager_poschel,prop2_chebyshev_beta,prop2_numeric
 // A cell is the closed rectangle [gamma_lo, gamma_hi] x [g_lo, g_hi]. Each
 // method column holds its bound, safety_factor x (worst |approximation - e| over
 // the cell's reference samples) + floor, or is empty where the formula does not
@@ -44,18 +44,19 @@ namespace viscor {
 /// The double-precision approximations an error map can vouch for, in order of
 /// cost (measured: eqs. 22, 23, 25 about 20 ns; Prop. 2 with Chebyshev-Beta
 /// coefficients 3.4 us; with quadrature 47 us, as much as an exact solve).
-enum class approximation { small_g, large_g, schwager_poschel, prop2_chebyshev, prop2_numeric };
+enum class approximation { small_g, large_g, schwager_poschel, prop2_chebyshev_beta, prop2_numeric };
 
 inline constexpr std::array<approximation, 5> all_approximations{
-    approximation::small_g, approximation::large_g, approximation::schwager_poschel, approximation::prop2_chebyshev,
+    approximation::small_g, approximation::large_g, approximation::schwager_poschel, approximation::prop2_chebyshev_beta,
     approximation::prop2_numeric};
 
+/// The approximation's name, as in the map's column header and evaluate's method.
 inline std::string to_string(approximation a) {
   switch (a) {
     case approximation::small_g: return "small_g";
     case approximation::large_g: return "large_g";
     case approximation::schwager_poschel: return "schwager_poschel";
-    case approximation::prop2_chebyshev: return "prop2_chebyshev";
+    case approximation::prop2_chebyshev_beta: return "prop2_chebyshev_beta";
     case approximation::prop2_numeric: return "prop2_numeric";
   }
   return "?";
@@ -76,7 +77,7 @@ inline std::optional<double> approximate_e(const cor_approximations<double>& a, 
       if (!a.is_kuwabara_kono()) return std::nullopt;
       e = a.schwager_poschel(gamma, g);
       break;
-    case approximation::prop2_chebyshev:
+    case approximation::prop2_chebyshev_beta:
       if (g < 0) return std::nullopt;
       e = a.prop2(gamma, g, coefficient_source::chebyshev_beta).e;
       break;
@@ -89,10 +90,12 @@ inline std::optional<double> approximate_e(const cor_approximations<double>& a, 
 /// Whether all reference samples of a cell rebound, all stick, or both occur.
 enum class cell_outcome { rebound, stick, mixed };
 
+/// "rebound", "stick" or "mixed".
 inline std::string to_string(cell_outcome o) {
   return o == cell_outcome::rebound ? "rebound" : o == cell_outcome::stick ? "stick" : "mixed";
 }
 
+/// One cell of an error map: its rectangle, how many reference samples it saw, their outcome and the bound of each approximation.
 struct error_map_cell {
   std::string gamma_lo, gamma_hi, g_lo, g_hi;  ///< exact decimal edges, as written
   double gamma_lo_v = 0, gamma_hi_v = 0, g_lo_v = 0, g_hi_v = 0;
@@ -108,6 +111,7 @@ struct map_bounds {
   cell_outcome outcome = cell_outcome::mixed;
 };
 
+/// Per-cell bounds on the error of each double-precision approximation of one law, read from a map file.
 class error_map {
  public:
   contact_law law;
@@ -116,6 +120,7 @@ class error_map {
   /// Provenance "# key=value" lines other than law, alpha, beta, safety_factor, floor.
   std::vector<std::pair<std::string, std::string>> metadata;
 
+  /// The cells, in the order added.
   const std::vector<error_map_cell>& cells() const noexcept { return m_cells; }
 
   /// Adds a cell; throws invalid_parameter for an empty or inverted rectangle.

@@ -45,6 +45,7 @@ struct reference_point {
   impact_outcome outcome = impact_outcome::rebound;
 };
 
+/// What build_error_map needs: the cell edges, the safety factor, floor and fewest samples per cell, and provenance.
 struct error_map_spec {
   std::vector<std::string> gamma_edges, g_edges;  ///< increasing exact decimals
   double safety_factor = 4;

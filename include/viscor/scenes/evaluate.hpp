@@ -70,19 +70,20 @@ enum class evaluation_method {
   small_g,           ///< eq. (22), via an error map
   large_g,           ///< eq. (23), via an error map
   schwager_poschel,  ///< eq. (25), via an error map
-  prop2_chebyshev,   ///< Prop. 2 with Chebyshev-Beta coefficients, via an error map
+  prop2_chebyshev_beta,   ///< Prop. 2 with Chebyshev-Beta coefficients, via an error map
   prop2_numeric,     ///< Prop. 2 with quadrature coefficients, via an error map
   exact,             ///< a closed form (exact_cor)
   taylor,            ///< solve_impact at `digits`
   certified,         ///< certify at `digits`
 };
 
+/// The method's name as printed in JSON and scene files.
 inline std::string to_string(evaluation_method m) {
   switch (m) {
     case evaluation_method::small_g: return "small_g";
     case evaluation_method::large_g: return "large_g";
     case evaluation_method::schwager_poschel: return "schwager_poschel";
-    case evaluation_method::prop2_chebyshev: return "prop2_chebyshev";
+    case evaluation_method::prop2_chebyshev_beta: return "prop2_chebyshev_beta";
     case evaluation_method::prop2_numeric: return "prop2_numeric";
     case evaluation_method::exact: return "exact";
     case evaluation_method::taylor: return "taylor";
@@ -91,6 +92,7 @@ inline std::string to_string(evaluation_method m) {
   return "?";
 }
 
+/// How evaluate may meet a tolerance: bound kind, error map, which methods are allowed.
 struct evaluate_options {
   bool relative = false;            ///< bound relative on 1 - e instead of absolute on e
   const error_map* map = nullptr;   ///< approximations are used only inside its cells
@@ -100,6 +102,7 @@ struct evaluate_options {
   bool loose_first_attempt = true;  ///< first Taylor solve at step tolerance tolerance/1000
 };
 
+/// What evaluate returns: e, 1 - e, the outcome, the method chosen and its bound.
 template <class Real>
 struct evaluation {
   Real e = 1, one_minus_e = 0;
@@ -290,6 +293,7 @@ evaluation_text certified_in(const contact_law& law, const Real& gamma, const Re
 template <class Real>
 class evaluator {
  public:
+  /// An evaluator for `law`; throws invalid_parameter for an invalid law, a map of another law or max_attempts < 1.
   explicit evaluator(contact_law law, evaluate_options options = {}) : m_law(std::move(law)), m_options(options) {
     m_law.validate();
     if (m_options.map) {
@@ -301,7 +305,9 @@ class evaluator {
     if (m_options.max_attempts < 1) throw invalid_parameter("parameter max_attempts must be >= 1");
   }
 
+  /// The law evaluated.
   const contact_law& law() const noexcept { return m_law; }
+  /// The options it was built with.
   const evaluate_options& options() const noexcept { return m_options; }
 
   /// e at (gamma, g) with empirical_bound <= tolerance (absolute, or relative on 1 - e).

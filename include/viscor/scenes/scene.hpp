@@ -44,6 +44,7 @@ struct elastic_material {
   Real youngs_modulus = 0;
   Real poisson_ratio = 0;
 
+  /// Throws invalid_parameter naming `where` and the invalid field.
   void validate(const std::string& where) const {
     require_positive(youngs_modulus, where + ".youngs_modulus");
     require_finite(poisson_ratio, where + ".poisson_ratio");

@@ -36,11 +36,13 @@ namespace viscor::surrogate {
 /// Chebyshev patches on an adaptive k-d tree over the box [x0, x1] x [y0, y1].
 /// Every split halves its cell, so the tree is all a lookup needs.
 struct patch_tree {
+  /// A node of the tree: an inner split or a leaf naming its patch.
   struct node {
     double split = 0;     ///< the coordinate value at which an inner node splits
     std::int32_t dim = 2;  ///< 0: splits x, 1: splits y, 2: leaf
     std::int32_t child = 0;  ///< inner: index of the lower child (upper = child + 1); leaf: patch index
   };
+  /// A leaf's affine map from its cell onto [-1, 1]^2.
   struct patch {
     double cx = 0, sx = 1, cy = 0, sy = 1;  ///< u = (x - cx) * sx, v = (y - cy) * sy in [-1, 1]
   };
@@ -50,6 +52,7 @@ struct patch_tree {
   std::vector<patch> patches;
   std::vector<double> coefficients;  ///< patch p: [p * order^2, (p + 1) * order^2)
 
+  /// The interpolant at (x, y), which must lie in the box.
   double operator()(double x, double y) const noexcept {
     std::int32_t i = 0;
     while (nodes[static_cast<std::size_t>(i)].dim != 2) {
@@ -70,6 +73,7 @@ struct patch_line {
   std::vector<double> breaks{0, 1};
   std::vector<double> coefficients;  ///< interval k: [k * order, (k + 1) * order)
 
+  /// The interpolant at x, which must lie in [breaks.front(), breaks.back()].
   double operator()(double x) const noexcept {
     std::size_t lo = 0, hi = breaks.size() - 2;  // find the interval: few, so bisect
     while (lo < hi) {
@@ -88,6 +92,7 @@ struct surrogate_bound {
   double abs_e_squared = 0;    ///< |e_s^2 - e^2| everywhere
   double rel_one_minus_e = 0;  ///< |(1 - e)_s / (1 - e) - 1| for gamma <= 1e-2
   double safety_factor = 0;
+  /// Whether the bound comes from a verification (a safety factor was applied).
   bool verified() const noexcept { return safety_factor > 0; }
 };
 
@@ -117,6 +122,7 @@ struct cor_surrogate {
   patch_tree low_load, high_load;
   surrogate_bound bound;
 
+  /// Whether (gamma, g) lies in the fitted domain (false for NaN).
   bool in_domain(double gamma, double g) const noexcept {
     return gamma >= 0 && gamma <= gamma_max && g >= g_min && g <= g_max;
   }
@@ -124,6 +130,7 @@ struct cor_surrogate {
   /// gamma_c(g) for g_split <= g <= g_max: the bead sticks for gamma >= gamma_c.
   double critical_gamma(double g) const noexcept { return std::exp(log_gamma_c(std::log(g))); }
 
+  /// e, 1 - e and the outcome at (gamma, g); in_domain false (and nothing else set) outside the domain.
   surrogate_value operator()(double gamma, double g) const noexcept {
     surrogate_value v;
     if (!in_domain(gamma, g)) return v;  // also rejects NaN

@@ -22,6 +22,7 @@
 
 namespace viscor::surrogate {
 
+/// A point at which the fit is checked against a certified value.
 struct verification_point {
   double gamma = 0, g = 0;
 };
@@ -112,6 +113,7 @@ inline bool near_threshold_in_g(const cor_surrogate& s, double gamma, double g, 
   return std::abs(std::log(gamma / s.critical_gamma(g))) <= band * std::max(slope, 1e-3);
 }
 
+/// The worst errors of the surrogate against certified reference values, per region (region_names order).
 inline std::vector<region_errors> compare_with_reference(const cor_surrogate& s, const std::vector<reference_value>& refs,
                                                          const surrogate_targets& targets) {
   std::vector<region_errors> regions;

@@ -56,6 +56,7 @@ inline table_grouping grouping_of(const std::string& path) {
 struct approximation_id {
   std::string formula;  ///< small_g, large_g, schwager_poschel, prop2, prop2_squared, prop2_linearized
   std::string source;   ///< closed_form, or a coefficient_source name
+  /// The (formula, source) pair, for ordering.
   auto key() const { return std::tie(formula, source); }
 };
 
@@ -74,6 +75,7 @@ struct error_group {
   std::int64_t non_finite = 0;  ///< rows where the formula threw or gave NaN/inf
   std::string first_failure;    ///< the first of them, for messages
 
+  /// A unique text key of the group.
   std::string key() const { return table + "|" + law + "|" + g + "|" + range + "|" + formula + "|" + source; }
 };
 

@@ -41,6 +41,7 @@ struct axis_item {
   std::string where;  ///< where the item was given ("spec.json:7"), for error messages
   std::map<std::string, std::string> field_where;  ///< where each of its fields was given ("count" -> "spec.json:9")
 
+  /// Where `field` was given, else where the item was.
   const std::string& where_of(const std::string& field) const {
     const auto it = field_where.find(field);
     return it == field_where.end() ? where : it->second;
@@ -50,6 +51,7 @@ struct axis_item {
 /// A grid axis (gamma or g): the sorted union of its items' values.
 struct grid_axis {
   std::vector<axis_item> items;
+  /// Whether the axis has no items.
   bool empty() const { return items.empty(); }
 };
 
@@ -58,6 +60,7 @@ struct grid_axis {
 /// has it, else closed forms where they exist.
 enum class row_method { automatic, exact, certify };
 
+/// The method's name as in a spec's "method" field.
 inline std::string to_string(row_method m) {
   switch (m) {
     case row_method::automatic: return "auto";
@@ -70,8 +73,10 @@ inline std::string to_string(row_method m) {
 /// For `viscor table sticking`: which parameter the threshold is solved for.
 enum class threshold_variable { g, gamma };
 
+/// "g" or "gamma".
 inline std::string to_string(threshold_variable v) { return v == threshold_variable::g ? "g" : "gamma"; }
 
+/// A parsed table spec: the laws, the gamma and g axes, digits, method, and (sticking tables) the threshold asked for.
 struct grid_spec {
   std::string description;
   std::vector<contact_law> laws;
@@ -219,6 +224,7 @@ struct expanded_axes {
   std::vector<std::string> gamma, g;
 };
 
+/// Validates `spec` and expands its axes into sorted exact decimals.
 inline expanded_axes expand(const grid_spec& spec) {
   validate(spec);
   expanded_axes axes;
@@ -239,8 +245,11 @@ inline std::int64_t grid_size(const grid_spec& spec, const expanded_axes& axes) 
 struct shard {
   std::int64_t index = 0, count = 1;
 
+  /// Whether grid row `row` belongs to this shard.
   bool contains(std::int64_t row) const { return row % count == index; }
+  /// Whether this is the whole table (count 1).
   bool whole() const { return count == 1; }
+  /// "index/count".
   std::string to_string() const { return std::to_string(index) + "/" + std::to_string(count); }
 
   /// Parses "i/N"; throws invalid_parameter.

@@ -37,6 +37,7 @@ namespace viscor {
 /// Where a row's numbers come from ("exact" or "certified" in the CSV).
 enum class row_source { exact, certified };
 
+/// The source's name as in a table's source column.
 inline std::string to_string(row_source s) { return s == row_source::exact ? "exact" : "certified"; }
 
 /// Human-readable method, for sidecars.
@@ -96,6 +97,7 @@ inline std::string csv_line(const table_row& r) {
   return s.str();
 }
 
+/// A threshold row as one CSV line (without '\n').
 inline std::string csv_line(const threshold_row& r) {
   std::ostringstream s;
   s << r.index << ',' << r.law << ',' << r.alpha << ',' << r.beta << ',' << to_string(r.solve_for) << ','
@@ -118,6 +120,7 @@ struct csv_table {
   std::vector<csv_record> rows;  ///< in file order
   bool truncated_tail = false;   ///< a last line without '\n' was dropped (allow_truncated_tail)
 
+  /// The CSV header of this table's kind.
   const std::string& header() const {
     static const std::string cor = table_header(table_kind::cor), sticking = table_header(table_kind::sticking);
     return kind == table_kind::cor ? cor : sticking;

@@ -21,6 +21,7 @@
 
 namespace viscor {
 
+/// A certified sticking threshold: a rebound point and a stick point bracketing it, and the digits they agree to.
 template <class Real>
 struct threshold_result {
   Real rebound_at = 0;  ///< a certified rebound point, below the threshold

@@ -40,6 +40,7 @@ struct table_settings {
   row_method method = row_method::automatic;
   int min_digits = 0;  ///< rebound rows certified to fewer digits are errors
 
+  /// The settings a spec asks for.
   static table_settings from(const grid_spec& spec) { return {spec.digits, spec.method, spec.min_digits}; }
 };
 

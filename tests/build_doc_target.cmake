@@ -1,0 +1,23 @@
+# Builds the `doc` target of BUILD_DIR and checks that it wrote the HTML reference
+# with a page for a public function (viscor::solve_impact).
+execute_process(COMMAND ${CMAKE_COMMAND} --build ${BUILD_DIR} --target doc RESULT_VARIABLE rc OUTPUT_VARIABLE out
+                ERROR_VARIABLE out)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "the doc target failed (${rc}):\n${out}")
+endif()
+if(NOT EXISTS ${BUILD_DIR}/doc/html/index.html)
+  message(FATAL_ERROR "the doc target wrote no ${BUILD_DIR}/doc/html/index.html")
+endif()
+file(GLOB_RECURSE pages ${BUILD_DIR}/doc/html/*.html)
+set(found FALSE)
+foreach(page ${pages})
+  file(STRINGS ${page} hit REGEX "solve_impact" LIMIT_COUNT 1)
+  if(hit)
+    set(found TRUE)
+    break()
+  endif()
+endforeach()
+if(NOT found)
+  message(FATAL_ERROR "no page of the API reference mentions solve_impact")
+endif()
+message(STATUS "API reference: ${BUILD_DIR}/doc/html/index.html")
