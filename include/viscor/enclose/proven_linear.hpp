@@ -62,16 +62,6 @@ struct linear_contact_system {
   }
 };
 
-/// Limits of a proof.
-struct proof_options {
-  std::size_t max_steps = 10000;
-  int max_halvings = 60;  ///< a step halved this often without validating: undecided
-  /// Bits of accuracy per step that order and step size aim at; 0: all working
-  /// bits. Fewer give longer steps and wider, still valid, enclosures (the tests use
-  /// it to make the remainder dominate the width).
-  int step_tolerance_bits = 0;
-};
-
 /// Proves the impact of the linear law at (gamma, g), given as exact decimals, with
 /// balls of working_bits(digits) bits. Throws invalid_parameter for a gamma < 0 or a
 /// text that is not a finite decimal.
@@ -97,7 +87,8 @@ inline proven_impact prove_linear_impact(std::string_view gamma_text, std::strin
   ball t(0);
   for (std::size_t n = 0; n < options.max_steps; ++n) {
     result.steps = n + 1;
-    double h_try = proposed_step(system.jet(x, order), order, log2_tolerance);
+    const ball_jet jet = system.jet(x, order);
+    double h_try = proposed_step(jet, order, log2_tolerance);
     step_enclosure step;
     int halvings = 0;
     for (;; ++halvings) {
@@ -107,7 +98,7 @@ inline proven_impact prove_linear_impact(std::string_view gamma_text, std::strin
       }
       ball h;
       arb_set_d(h.get(), h_try);  // exact: a double is a dyadic number
-      step = validated_step(system, x, h, order);
+      step = validated_step(system, jet, h, order);
       h_try /= 2;
       if (!step.validated || !step.tight(log2_tolerance)) continue;
       const ball& u_range = step.range[0];

@@ -42,4 +42,14 @@ struct proven_impact {
   }
 };
 
+/// Limits of a proof.
+struct proof_options {
+  std::size_t max_steps = 10000;
+  int max_halvings = 60;  ///< a step halved this often without validating: undecided
+  /// Bits of accuracy per step that order and step size aim at; 0: all working
+  /// bits. Fewer give longer steps and wider, still valid, enclosures (the tests use
+  /// it to make the remainder dominate the width).
+  int step_tolerance_bits = 0;
+};
+
 }  // namespace viscor::enclose

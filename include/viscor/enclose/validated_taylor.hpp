@@ -25,6 +25,7 @@
 #include <cmath>
 #include <concepts>
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 namespace viscor::enclose {
@@ -60,18 +61,22 @@ struct step_enclosure {
   std::vector<ball> remainder;   ///< order p+1 over the step's enclosure, per component
   std::vector<ball> range;       ///< encloses x(t) for all t in [0, h]
 
-  /// Whether the remainder adds at most 2^log2_tolerance (1 + |x_i(h)|) to any
-  /// component's width at the step's end: the step keeps the enclosure as tight as
-  /// the working precision (a validated step can be valid and still far too wide).
-  bool tight(double log2_tolerance) const {
+  /// How far (in bits) the remainder's contribution R h^(p+1) exceeds
+  /// 2^log2_tolerance (1 + |x_i|) in the worst component; <= 0: the step is tight,
+  /// i.e. it keeps the enclosure as narrow as the working precision (a validated
+  /// step can be valid and still far too wide).
+  double excess_bits(double log2_tolerance) const {
+    double worst = -1e300;
     for (std::size_t i = 0; i < remainder.size(); ++i) {
       const double added = static_cast<double>(remainder[i].abs_upper().log2_bound()) +
                            static_cast<double>(coefficients[i].size()) * std::log2(h.mid_double());
       const double scale = std::max(0.0, static_cast<double>(coefficients[i][0].log2_bound()));
-      if (added > log2_tolerance + scale) return false;
+      worst = std::max(worst, added - (log2_tolerance + scale));
     }
-    return true;
+    return worst;
   }
+  /// Whether excess_bits(log2_tolerance) <= 0.
+  bool tight(double log2_tolerance) const { return excess_bits(log2_tolerance) <= 0; }
   /// Encloses component i at time t (a ball inside [0, h]).
   ball at(std::size_t i, const ball& t) const { return evaluate_with_remainder(coefficients[i], remainder[i], t); }
   /// Encloses the state at time t (a ball inside [0, h]).
@@ -85,12 +90,13 @@ struct step_enclosure {
 /// The interval [0, h] as a ball.
 inline ball zero_to(const ball& h) { return ball::hull(ball(0), h); }
 
-/// Tries one validated step of size h (exact) from the ball x0 at Taylor order p.
+/// Tries one validated step of size h (exact) from the ball x0 at Taylor order p,
+/// given the coefficients of the solution through x0 (system.jet(x0, order)).
 template <ball_system S>
-step_enclosure validated_step(const S& system, const std::vector<ball>& x0, const ball& h, std::size_t order) {
+step_enclosure validated_step(const S& system, const ball_jet& coefficients, const ball& h, std::size_t order) {
   step_enclosure step;
   step.h = h;
-  step.coefficients = system.jet(x0, order);
+  step.coefficients = coefficients;
   const std::size_t n = system.size();
   const ball interval = zero_to(h);
   ball half_precision;
@@ -120,7 +126,8 @@ step_enclosure validated_step(const S& system, const std::vector<ball>& x0, cons
     }
     if (inside) {
       if (remainder_factor_for_tests != 1) {
-        const ball factor = ball::from_decimal(std::to_string(remainder_factor_for_tests));
+        ball factor;
+        arb_set_d(factor.get(), remainder_factor_for_tests);
         for (auto& r : remainder) r = r * factor;
       }
       step.remainder = std::move(remainder);
@@ -134,6 +141,15 @@ step_enclosure validated_step(const S& system, const std::vector<ball>& x0, cons
     }
   }
   return step;  // not validated
+}
+
+/// The next size to try after `step` failed: from the remainder's excess when it
+/// was validated (the contribution scales as h^(p+1)), else half.
+inline double retry_size(const step_enclosure& step, double log2_tolerance, std::size_t order) {
+  const double h = step.h.mid_double();
+  if (!step.validated) return h / 2;
+  const double excess = step.excess_bits(log2_tolerance);
+  return h * std::clamp(std::exp2(-(excess + 1) / static_cast<double>(order + 1)), 0.1, 0.9);
 }
 
 /// A step size for which the last retained coefficients are below 2^log2_tolerance
@@ -151,6 +167,28 @@ inline double proposed_step(const ball_jet& c, std::size_t order, double log2_to
     }
   }
   return std::exp2(log2_h);
+}
+
+/// A step from the state whose coefficients are `jet`: the first of the sizes
+/// tried (min(proposal, 1.25 x the last accepted size), then retry_size) that is
+/// validated, tight and accepted by `accept(step)`; nullopt after `attempts` tries.
+/// `last_size` is updated with the accepted size.
+template <ball_system S, class Accept>
+std::optional<step_enclosure> find_step(const S& system, const ball_jet& jet, std::size_t order,
+                                        double log2_tolerance, double& last_size, int attempts, Accept accept) {
+  double h = proposed_step(jet, order, log2_tolerance);
+  if (last_size > 0) h = std::min(h, 1.25 * last_size);
+  for (int attempt = 0; attempt < attempts; ++attempt) {
+    ball size;
+    arb_set_d(size.get(), h);  // exact: a double is a dyadic number
+    step_enclosure step = validated_step(system, jet, size, order);
+    if (step.validated && step.tight(log2_tolerance) && accept(step)) {
+      last_size = h;
+      return step;
+    }
+    h = step.validated && !step.tight(log2_tolerance) ? retry_size(step, log2_tolerance, order) : h / 2;
+  }
+  return std::nullopt;
 }
 
 }  // namespace viscor::enclose
