@@ -15,6 +15,7 @@ packages=(
   python3-matplotlib        # tools/plot_reference.py figures
   lammps liggghts           # DEM programs run by tests/dem_drop_*test.cpp (issue 15)
   doxygen                   # API reference: cmake --build build --target doc (issue 13)
+  libflint-arb-dev          # Arb ball arithmetic: proven enclosures, include/viscor/enclose (issue 17)
 )
 
 missing=()

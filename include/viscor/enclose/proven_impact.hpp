@@ -1,0 +1,264 @@
+// A proven impact for any law with rational exponents alpha = a/q_a, beta = b/q_b
+// (docs/proofs.md). With Q = lcm(q_a, q_b) and u = s^Q both ends of the contact,
+// u = 0, are regular points of the equations written in s, so the proof has three
+// phases, each a validated Taylor integration (validated_taylor.hpp):
+//
+//   in   s from 0 (exactly) while v stays >= 1/4:      states (s, v, tau, D)
+//   mid  tau through the maximal compression:           states (u, v, D)
+//   out  s down to 0 (exactly) once one s-step reaches:  states (s, v, tau, D)
+//
+// In s (J = du/ds = Q s^(Q-1); every power of s below is a polynomial):
+//   dv/ds   = (g J - Q s^(Q(alpha+1)-1)) / v - gamma beta Q s^(Q beta-1),
+//   dtau/ds = J / v,   dD/ds = 2 gamma beta Q s^(Q beta-1) v;
+// in tau: u' = v, v' = g - u^alpha - gamma beta u^(beta-1) v,
+//   D' = 2 gamma beta u^(beta-1) v^2.
+// D is the dissipated energy: E = v^2/2 + u^(alpha+1)/(alpha+1) - g u has
+// E' = -gamma beta u^(beta-1) v^2, E(0) = 1/2, E(T_f) = e^2/2, so 1 - e^2 = D(T_f)
+// and 1 - e = D / (1 + e) keeps its relative width as gamma -> 0.
+//
+// The switch points are exact where the proof needs it: the first switch is at the
+// end of an s-step (an exact s); the second needs no exact point, as s = u^(1/Q) is
+// carried as a ball; the end of contact is s = 0 exactly, reached at sigma = s0 of
+// the last step, since s is linear in the step variable sigma: no root finding.
+//
+// Switch points (measured on Kuwabara-Kono, gamma = 0.05, g = 1): in s while
+// v >= 3/4, in tau until an s-step reaches a tenth of the way to s = 0; near
+// either singular point the series of the other variable converge slowly.
+//
+// Outcomes: rebound (v proven negative over every step of the way out, so the
+// first return to u = 0 is the end of the last step); stick when E is proven
+// negative (E never increases and E >= 0 at u = 0, so the bead never gets back);
+// undecided otherwise (a step that cannot be validated, the bead grazing u = 0, a
+// creep at g = 0 that no argument here traps, or the step budget spent).
+// proven_linear.hpp proves the linear law by a separate, simpler integration in
+// tau alone; the tests compare both with the closed form.
+#pragma once
+
+#include <viscor/core/contact_law.hpp>
+#include <viscor/enclose/ball_series.hpp>
+#include <viscor/enclose/proven_result.hpp>
+#include <viscor/enclose/validated_taylor.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <numeric>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace viscor::enclose {
+
+/// The constants of one proof, as balls (exact where the inputs are dyadic).
+struct impact_ball_constants {
+  ball alpha, beta, gamma, g, gamma_beta;
+  long Q = 1, Q_alpha = 1, Q_beta = 1;  ///< u = s^Q; Q alpha, Q beta integers
+  bool beta_is_one = false;
+};
+
+/// The equations in s, stepping in sigma with s = s0 + direction sigma.
+/// States: (s, v, tau, D).
+struct s_system {
+  const impact_ball_constants* k;
+  int direction = 1;  ///< +1: s grows (the way in); -1: s falls (the way out)
+
+  /// Four components: s, v, tau, D.
+  std::size_t size() const { return 4; }
+
+  /// Taylor coefficients 0..order in sigma through the ball state x.
+  ball_jet jet(const std::vector<ball>& x, std::size_t order) const {
+    // Exponents of s: u^alpha J = Q s^(Q alpha + Q - 1), u^(beta-1) J = Q s^(Q beta - 1), J = Q s^(Q-1).
+    const long Q = k->Q, m_spring = k->Q_alpha + Q - 1, m_damping = k->Q_beta - 1, m_jacobian = Q - 1;
+    std::vector<ball> powers(static_cast<std::size_t>(std::max({m_spring, m_damping, m_jacobian})) + 1);
+    powers[0] = ball(1);
+    for (std::size_t j = 1; j < powers.size(); ++j) powers[j] = powers[j - 1] * x[0];
+    ball_jet c(4, std::vector<ball>(order + 1));
+    for (std::size_t i = 0; i < 4; ++i) c[i][0] = x[i];
+    std::vector<ball> force_over_v(order), jacobian_over_v(order), damping(order), jacobian(order);
+    const ball q(Q);
+    const ball sign(static_cast<long>(direction));
+    for (std::size_t n = 0; n < order; ++n) {
+      jacobian[n] = q * series::monomial(powers, m_jacobian, direction, n);
+      const ball spring = q * series::monomial(powers, m_spring, direction, n);
+      damping[n] = k->gamma_beta * q * series::monomial(powers, m_damping, direction, n);
+      force_over_v[n] = series::quotient(k->g * jacobian[n] - spring, force_over_v, c[1], n);
+      jacobian_over_v[n] = series::quotient(jacobian[n], jacobian_over_v, c[1], n);
+      const ball dv = force_over_v[n] - damping[n];
+      const ball dtau = jacobian_over_v[n];
+      const ball dD = 2 * series::product(damping, c[1], n);
+      const ball next(static_cast<long>(n + 1));
+      c[0][n + 1] = n == 0 ? sign : ball(0);
+      c[1][n + 1] = sign * dv / next;
+      c[2][n + 1] = sign * dtau / next;
+      c[3][n + 1] = sign * dD / next;
+    }
+    return c;
+  }
+};
+
+/// The equations in tau. States: (u, v, D); needs u > 0.
+struct tau_system {
+  const impact_ball_constants* k;
+
+  /// Three components: u, v, D.
+  std::size_t size() const { return 3; }
+
+  /// Taylor coefficients 0..order in tau through the ball state x.
+  ball_jet jet(const std::vector<ball>& x, std::size_t order) const {
+    ball_jet c(3, std::vector<ball>(order + 1));
+    for (std::size_t i = 0; i < 3; ++i) c[i][0] = x[i];
+    std::vector<ball> spring(order), damping_power(order), damped_v(order);
+    const ball beta_minus_one = k->beta - 1;
+    for (std::size_t n = 0; n < order; ++n) {
+      spring[n] = series::power(c[0], spring, k->alpha, n);
+      damping_power[n] = k->beta_is_one ? ball(n == 0 ? 1 : 0) : series::power(c[0], damping_power, beta_minus_one, n);
+      damped_v[n] = series::product(damping_power, c[1], n);  // u^(beta-1) v
+      ball dv = -spring[n] - k->gamma_beta * damped_v[n];
+      if (n == 0) dv += k->g;
+      const ball next(static_cast<long>(n + 1));
+      c[0][n + 1] = c[1][n] / next;
+      c[1][n + 1] = dv / next;
+      c[2][n + 1] = 2 * k->gamma_beta * series::product(damped_v, c[1], n) / next;
+    }
+    return c;
+  }
+};
+
+namespace detail {
+
+/// Energy E = v^2/2 + u^(alpha+1)/(alpha+1) - g u.
+inline ball energy(const impact_ball_constants& k, const ball& u, const ball& v) {
+  ball spring;
+  const ball a1 = k.alpha + 1;
+  arb_pow(spring.get(), u.get(), a1.get(), enclose::ball_bits());
+  return v * v / 2 + spring / a1 - k.g * u;
+}
+
+inline ball root(const ball& u, long Q) {
+  ball s;
+  arb_root_ui(s.get(), u.get(), static_cast<ulong>(Q), enclose::ball_bits());
+  return s;
+}
+
+inline ball upper_bound(const ball& x) {
+  arf_t u;
+  arf_init(u);
+  arb_get_ubound_arf(u, x.get(), enclose::ball_bits());
+  ball b;
+  arb_set_arf(b.get(), u);
+  arf_clear(u);
+  return b;
+}
+
+/// Jorba-Zou order for the working bits.
+inline std::size_t proof_order(double log2_tolerance) {
+  return static_cast<std::size_t>(std::ceil(-log2_tolerance * std::log(2.0) / 2 + 1));
+}
+
+}  // namespace detail
+
+/// Proves the impact of `law` (rational exponents) at (gamma, g), given as exact
+/// decimals, with balls of working_bits(digits) bits. Throws invalid_parameter for a
+/// law that is not rational ("not provable"), gamma < 0, or an input that is not a
+/// finite decimal.
+inline proven_impact prove_impact(const contact_law& law, std::string_view gamma_text, std::string_view g_text,
+                                  int digits, const proof_options& options = {}) {
+  law.validate();
+  if (!law.alpha.is_rational() || !law.beta.is_rational())
+    throw invalid_parameter("not provable: the exponents of " + law.describe() +
+                            " are not rational (the end points need u = s^Q)");
+  if (digits < 5 || digits > 100000) throw invalid_parameter("digits must be in [5, 100000], got " + std::to_string(digits));
+  scoped_ball_bits bits(working_bits(digits));
+  impact_ball_constants k;
+  k.alpha = ball(static_cast<long>(law.alpha.numerator())) / ball(static_cast<long>(law.alpha.denominator()));
+  k.beta = ball(static_cast<long>(law.beta.numerator())) / ball(static_cast<long>(law.beta.denominator()));
+  k.gamma = ball::from_decimal(gamma_text);
+  k.g = ball::from_decimal(g_text);
+  if (!k.gamma.nonnegative()) throw invalid_parameter("gamma must be >= 0, got " + std::string(gamma_text));
+  k.gamma_beta = k.gamma * k.beta;
+  k.Q = std::lcm(static_cast<long>(law.alpha.denominator()), static_cast<long>(law.beta.denominator()));
+  k.Q_alpha = k.Q / law.alpha.denominator() * law.alpha.numerator();
+  k.Q_beta = k.Q / law.beta.denominator() * law.beta.numerator();
+  k.beta_is_one = law.beta.numerator() == law.beta.denominator();
+
+  const double log2_tolerance =
+      -static_cast<double>(options.step_tolerance_bits > 0 ? options.step_tolerance_bits : enclose::ball_bits());
+  const std::size_t order = detail::proof_order(log2_tolerance);
+  proven_impact result;
+  auto undecided = [&result](std::string why) {
+    result.outcome = proven_outcome::undecided;
+    result.how = std::move(why);
+    return result;
+  };
+  const ball quarter = ball(1) / ball(4), three_quarters = ball(3) / ball(4);
+
+  // The way in: s from 0 while v >= 1/4 over the whole step; on to tau once v < 3/4
+  // (near the maximal compression, where v -> 0, the s-series converge slowly).
+  s_system in{&k, +1};
+  std::vector<ball> x{ball(0), ball(1), ball(0), ball(0)};  // s, v, tau, D
+  double last_size = 0;
+  for (;;) {
+    if (++result.steps > options.max_steps) return undecided("step budget exhausted on the way in");
+    const auto step = find_step(in, in.jet(x, order), order, log2_tolerance, last_size, options.max_halvings,
+                                [&](const step_enclosure& st) { return (st.range[1] - quarter).positive(); });
+    if (!step) {
+      if (x[0].positive()) break;  // v is near 1/4: continue in tau
+      return undecided("no validated first step in s");
+    }
+    x = step->state_at(step->h);
+    if (!(x[1] - three_quarters).positive()) break;
+  }
+
+  // Through the maximal compression in tau, until one s-step reaches a tenth of
+  // the way to s = 0 (near u = 0 the tau-series converge slowly).
+  tau_system mid{&k};
+  std::vector<ball> y{pow(x[0], static_cast<unsigned long>(k.Q)), x[1], x[3]};  // u, v, D
+  ball tau = x[2];
+  s_system out{&k, -1};
+  last_size = 0;
+  for (;;) {
+    if (++result.steps > options.max_steps) return undecided("step budget exhausted in tau");
+    const auto step = find_step(mid, mid.jet(y, order), order, log2_tolerance, last_size, options.max_halvings,
+                                [](const step_enclosure& st) { return st.range[0].positive(); });
+    if (!step) return undecided("no validated step in tau at tau = " + tau.mid_str(10));
+    y = step->state_at(step->h);
+    tau = tau + step->h;
+    if (detail::energy(k, y[0], y[1]).negative()) {
+      result.outcome = proven_outcome::stick;
+      result.e = ball(0), result.one_minus_e = ball(1);
+      result.how = "energy proven negative at tau = " + tau.mid_str(10);
+      return result;
+    }
+    if (!y[1].negative()) continue;
+    x = {detail::root(y[0], k.Q), y[1], tau, y[2]};
+    if (proposed_step(out.jet(x, order), order, log2_tolerance) >= x[0].mid_double() / 10) break;
+  }
+
+  // The way out: s down to 0, with v < 0 over every step. The last step is as long
+  // as the upper bound of s, and ends where sigma = s0: s = 0 exactly.
+  last_size = 0;
+  for (;;) {
+    if (++result.steps > options.max_steps) return undecided("step budget exhausted on the way out");
+    const ball_jet jet = out.jet(x, order);
+    const ball s_upper = detail::upper_bound(x[0]);
+    if (proposed_step(jet, order, log2_tolerance) >= s_upper.mid_double()) {
+      const step_enclosure last = validated_step(out, jet, s_upper, order);
+      if (last.validated && last.tight(log2_tolerance) && last.range[1].negative()) {
+        const std::vector<ball> end = last.state_at(x[0]);
+        result.outcome = proven_outcome::rebound;
+        result.e = -end[1];
+        result.contact_time = end[2];
+        result.one_minus_e = end[3] / (1 + result.e);
+        result.how = "s reaches 0 with v < 0 over the last step";
+        if (!result.e.positive()) return undecided("e not proven > 0");
+        return result;
+      }
+    }
+    const auto step = find_step(out, jet, order, log2_tolerance, last_size, options.max_halvings,
+                                [](const step_enclosure& st) { return st.range[1].negative() && st.range[0].positive(); });
+    if (!step) return undecided("no validated step on the way out (v near 0?)");
+    x = step->state_at(step->h);
+  }
+}
+
+}  // namespace viscor::enclose
