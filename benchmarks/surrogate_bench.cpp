@@ -5,8 +5,11 @@
 //                         counters median_ns and max_ns: per point, the time of 64
 //                         repeated evaluations / 64, median and maximum over 2048 points;
 //   BM_taylor_double/<law>: solve_impact<double> on 64 of the same points (mean);
-//   counter ratio on BM_surrogate: mean Taylor time / median surrogate time.
+//   counter taylor_over_surrogate on BM_surrogate: mean Taylor time / median surrogate time;
+//   BM_gamma_for/<law>: the inverse on 1024 random (e, g); median_ns and max_ns per call.
 // Run: ./build/benchmarks/surrogate_bench (Release, -DVISCOR_BUILD_BENCHMARKS=ON).
+// $VISCOR_SURROGATE_DIR, if set, is searched instead of reference_data/surrogates
+// (as by the CLI), e.g. to time a fit before it is verified and committed.
 #include <viscor/core/contact_law.hpp>
 #include <viscor/impact/solve_impact.hpp>
 #include <viscor/surrogate/cor_surrogate.hpp>
@@ -15,6 +18,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdlib>
 #include <filesystem>
 #include <map>
 #include <random>
@@ -45,7 +49,9 @@ const cor_surrogate* load(const std::string& law) {
   static std::map<std::string, cor_surrogate> cache;
   auto it = cache.find(law);
   if (it == cache.end()) {
-    const std::string path = std::string(VISCOR_SOURCE_DIR) + "/reference_data/surrogates/" + law + ".surrogate";
+    const char* dir = std::getenv("VISCOR_SURROGATE_DIR");
+    const std::string path = (dir && *dir ? std::string(dir) : std::string(VISCOR_SOURCE_DIR) + "/reference_data/surrogates") +
+                             "/" + law + ".surrogate";
     if (!std::filesystem::exists(path)) return nullptr;
     it = cache.emplace(law, viscor::surrogate::read_cor_surrogate(path)).first;
   }
@@ -93,11 +99,40 @@ void BM_surrogate(benchmark::State& state, const std::string& law_name) {
   if (taylor_ns.count(law_name)) state.counters["taylor_over_surrogate"] = taylor_ns[law_name] / per_point[per_point.size() / 2];
 }
 
+// The inverse: gamma_for(e, g) over 1024 fixed-seed random (e, g) (e in [0.01, 1),
+// g as for the evaluations); counters median_ns and max_ns per call (16 repeats).
+void BM_gamma_for(benchmark::State& state, const std::string& law_name) {
+  const cor_surrogate* s = load(law_name);
+  if (!s) return state.SkipWithError("no committed surrogate");
+  const auto points = random_points(*s, 1024);
+  std::mt19937_64 rng(77);
+  std::vector<double> targets;
+  for (std::size_t i = 0; i < points.size(); ++i) targets.push_back(0.01 + 0.98999 * static_cast<double>(rng() >> 11) * 0x1.0p-53);
+  for (auto _ : state)
+    for (std::size_t i = 0; i < points.size(); ++i) benchmark::DoNotOptimize(s->gamma_for(targets[i], points[i].g));
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * points.size()));
+  std::vector<double> per_call;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const auto start = std::chrono::steady_clock::now();
+    for (int k = 0; k < 16; ++k) {
+      double e = targets[i];
+      benchmark::DoNotOptimize(e);
+      benchmark::DoNotOptimize(s->gamma_for(e, points[i].g));
+    }
+    per_call.push_back(std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count() / 16);
+  }
+  std::sort(per_call.begin(), per_call.end());
+  state.counters["median_ns"] = per_call[per_call.size() / 2];
+  state.counters["max_ns"] = per_call.back();
+}
+
 const int registered = [] {
   for (const char* law : {"linear", "hertz_linear_damping", "tsuji", "kuwabara_kono", "hunt_crossley"}) {
     benchmark::RegisterBenchmark((std::string("BM_taylor_double/") + law).c_str(), BM_taylor_double, std::string(law))
         ->Unit(benchmark::kMicrosecond);
     benchmark::RegisterBenchmark((std::string("BM_surrogate/") + law).c_str(), BM_surrogate, std::string(law))
+        ->Unit(benchmark::kMicrosecond);
+    benchmark::RegisterBenchmark((std::string("BM_gamma_for/") + law).c_str(), BM_gamma_for, std::string(law))
         ->Unit(benchmark::kMicrosecond);
   }
   return 0;

@@ -50,7 +50,8 @@ const char* const steel_scene = R"({
   "damping": {"measured_e": 0.893, "v0": 0.246, "gravity": 9.8},
   "gravity": 9.8,
   "velocities": [0.05, 0.246, 1],
-  "tolerance": 1e-8
+  "tolerance": 1e-8,
+  "contact_time": true
 })";
 
 TEST(scene_cli, rows_and_calibration_round_trip) {

@@ -5,15 +5,26 @@
 //   - every committed surrogate meets its stated bound on a 2,000-point subsample
 //     of its committed certified verification table (every 10th row); the slow
 //     test (surrogate_slow_test.cpp) takes all rows;
-//   - a perturbed surrogate fails the same check (the check can fail).
+//   - a perturbed surrogate fails the same check (the check can fail);
+//   - the inverse gamma_for round-trips (e_s(gamma_for(e, g), g) = e) on 2,000
+//     fixed-seed random (e, g), and is NaN where no gamma in the domain fits;
+//   - viscor::evaluate takes the surrogate where its bound meets the tolerance
+//     (and its value is within that tolerance of an independent Taylor solve in long
+//     double), and falls back outside the domain, near the threshold, or when the
+//     tolerance is tighter than the bound.
 #include "surrogate_test_utils.hpp"
 
+#include <viscor/core/contact_law.hpp>
+#include <viscor/impact/solve_impact.hpp>
+#include <viscor/scenes/evaluate.hpp>
 #include <viscor/surrogate/chebyshev.hpp>
 #include <viscor/surrogate/cor_surrogate.hpp>
+#include <viscor/surrogate/surrogate_source.hpp>
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 #include <sstream>
 
 namespace {
@@ -98,6 +109,61 @@ TEST_P(CommittedSurrogate, APerturbedSurrogateFailsTheCheck) {
     s->low_load.coefficients[p * static_cast<std::size_t>(s->low_load.order * s->low_load.order)] += 1e-11;
   const auto refs = viscor::test::load_verification_table(GetParam(), 10);
   EXPECT_FALSE(viscor::test::bound_violations(*s, refs).empty());
+}
+
+TEST_P(CommittedSurrogate, InverseRoundTrips) {
+  const auto s = viscor::test::load_committed_surrogate(GetParam());
+  if (!s) GTEST_SKIP() << "no committed surrogate for " << GetParam();
+  std::mt19937_64 rng(41);
+  auto u = [&] { return static_cast<double>(rng() >> 11) * 0x1.0p-53; };
+  int solved = 0;
+  for (int i = 0; i < 2000; ++i) {
+    const double e = 0.01 + 0.98999 * u();
+    const double g = i % 2 ? s->g_min * u() : std::exp(std::log(1e-3) + (std::log(s->g_max) - std::log(1e-3)) * u());
+    const double gamma = s->gamma_for(e, g);
+    if (std::isnan(gamma)) {
+      // Unreachable in the domain: even gamma_max leaves e above the target.
+      EXPECT_GT((*s)(s->gamma_max, g).e, e) << "e = " << e << ", g = " << g;
+      continue;
+    }
+    ++solved;
+    ASSERT_TRUE(gamma >= 0 && gamma <= s->gamma_max) << gamma;
+    const auto v = (*s)(gamma, g);
+    EXPECT_NEAR(v.e, e, 1e-13) << "e = " << e << ", g = " << g << ", gamma = " << gamma;
+  }
+  EXPECT_GT(solved, 1000);
+  EXPECT_TRUE(std::isnan(s->gamma_for(0.005, 1.0)));
+  EXPECT_TRUE(std::isnan(s->gamma_for(1.0, 1.0)));
+  EXPECT_TRUE(std::isnan(s->gamma_for(0.5, s->g_max * 2)));
+}
+
+TEST_P(CommittedSurrogate, EvaluateUsesItWhereItsBoundMeetsTheTolerance) {
+  const auto s = viscor::test::load_committed_surrogate(GetParam());
+  if (!s) GTEST_SKIP() << "no committed surrogate for " << GetParam();
+  const viscor::contact_law law = viscor::law_by_name(GetParam());
+  const surrogate_source source(*s);
+  viscor::evaluate_options options;
+  options.surrogate = &source;
+  const viscor::evaluator<double> ev(law, options);
+  for (auto [gamma, g] : std::vector<std::pair<double, double>>{{0.05, 1.0}, {0.3, -0.2}, {0.5 * s->critical_gamma(500.0), 500.0}, {0.9, 0.0}}) {
+    const auto r = ev(gamma, g, 1e-10);
+    EXPECT_EQ(r.method, viscor::evaluation_method::surrogate) << gamma << " " << g;
+    EXPECT_LE(r.empirical_bound, 1e-10);
+    const auto truth = viscor::solve_impact<long double>(law, gamma, g);
+    EXPECT_NEAR(r.e, static_cast<double>(truth.e), 1e-10) << gamma << " " << g;
+    // Relative on 1 - e as well.
+    viscor::evaluate_options relative = options;
+    relative.relative = true;
+    EXPECT_EQ(viscor::evaluator<double>(law, relative)(gamma, g, 1e-8).method, viscor::evaluation_method::surrogate);
+  }
+  // Falls back: outside the domain, tighter than the bound, at a hair from the threshold.
+  EXPECT_NE(ev(1.5, 1.0, 1e-10).method, viscor::evaluation_method::surrogate);
+  if (s->bound.abs_e / 2 >= 1e-14) EXPECT_NE(ev(0.05, 1.0, s->bound.abs_e / 2).method, viscor::evaluation_method::surrogate);
+  const double g = 50, gamma = s->critical_gamma(g) * (1 - 1e-12);
+  EXPECT_NE(ev(gamma, g, 1e-4).method, viscor::evaluation_method::surrogate);
+  // A surrogate of another law is refused.
+  const viscor::contact_law other = viscor::law_by_name(std::string(GetParam()) == "linear" ? "tsuji" : "linear");
+  EXPECT_THROW(viscor::evaluator<double>(other, options), viscor::invalid_parameter);
 }
 
 INSTANTIATE_TEST_SUITE_P(Laws, CommittedSurrogate,

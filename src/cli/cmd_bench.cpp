@@ -13,9 +13,11 @@
 #include "cli_common.hpp"
 #include "command_registry.hpp"
 #include "data_directory.hpp"
+#include "surrogate_files.hpp"
 
 #include <viscor/scenes/error_map.hpp>
 #include <viscor/scenes/evaluate.hpp>
+#include <viscor/surrogate/surrogate_source.hpp>
 #include <viscor/tables/reference_table.hpp>
 
 #include <algorithm>
@@ -135,6 +137,14 @@ struct bench_command {
                                        [e] { return to_decimal_string(*e); }};
                      }});
     }
+    // The committed surrogate of the law (docs/surrogate.md), where there is one.
+    out.push_back({"surrogate", "double", [](const bench_point& p) -> std::optional<prepared> {
+                     const surrogate::cor_surrogate* s = find_surrogate(p.law);
+                     const double gamma = std::strtod(p.gamma.c_str(), nullptr), g = std::strtod(p.g.c_str(), nullptr);
+                     if (!s || !(*s)(gamma, g).in_domain) return std::nullopt;
+                     auto e = std::make_shared<double>(0);
+                     return prepared{[=] { *e = (*s)(gamma, g).e; }, [e] { return to_decimal_string(*e); }};
+                   }});
     out.push_back({"taylor", "double", [](const bench_point& p) { return std::optional<prepared>(taylor_at<double>(p)); }});
     out.push_back(
         {"taylor", "long double", [](const bench_point& p) { return std::optional<prepared>(taylor_at<long double>(p)); }});
@@ -171,19 +181,28 @@ struct bench_command {
                                          [e] { return *e; }};
                        }});
     }
-    for (const char* tol : {"1e-4", "1e-10"}) {
-      const double t = std::strtod(tol, nullptr);
-      out.push_back({std::string("evaluate ") + tol + (loaded.empty() ? "" : " (maps)"), "double",
-                     [t, &loaded](const bench_point& p) -> std::optional<prepared> {
-                       evaluate_options o;
-                       const auto it = loaded.find(p.law.name);
-                       if (it != loaded.end()) o.map = it->second.get();
-                       auto ev = std::make_shared<evaluator<double>>(p.law, o);
-                       auto e = std::make_shared<double>(0);
-                       const double gamma = std::strtod(p.gamma.c_str(), nullptr), g = std::strtod(p.g.c_str(), nullptr);
-                       return prepared{[=] { *e = (*ev)(gamma, g, t).e; }, [e] { return to_decimal_string(*e); }};
-                     }});
-    }
+    for (const bool with_surrogate : {false, true})
+      for (const char* tol : {"1e-4", "1e-10"}) {
+        const double t = std::strtod(tol, nullptr);
+        out.push_back({std::string("evaluate ") + tol + (loaded.empty() ? "" : " (maps)") + (with_surrogate ? " (surrogate)" : ""),
+                       "double", [t, &loaded, with_surrogate](const bench_point& p) -> std::optional<prepared> {
+                         evaluate_options o;
+                         const auto it = loaded.find(p.law.name);
+                         if (it != loaded.end()) o.map = it->second.get();
+                         // With the committed surrogate of the law tried first (docs/surrogate.md).
+                         std::shared_ptr<surrogate::surrogate_source> source;
+                         if (with_surrogate) {
+                           const auto* s = find_surrogate(p.law);
+                           if (!s) return std::nullopt;
+                           source = std::make_shared<surrogate::surrogate_source>(*s);
+                         }
+                         o.surrogate = source.get();
+                         auto ev = std::make_shared<evaluator<double>>(p.law, o);
+                         auto e = std::make_shared<double>(0);
+                         const double gamma = std::strtod(p.gamma.c_str(), nullptr), g = std::strtod(p.g.c_str(), nullptr);
+                         return prepared{[=] { *e = (*ev)(gamma, g, t).e; (void)source; }, [e] { return to_decimal_string(*e); }};
+                       }});
+      }
     return out;
   }
 

@@ -1,9 +1,15 @@
 // viscor calibrate: the damping that gives a target CoR (calibration.hpp), scaled
 // (--g) or physical (--m, --k, --v0, --gravity[, --force] -> gamma0 by eq. 2).
+// --method solve (default): root finding on solve_impact at --digits.
+// --method surrogate: the inverse of the law's committed surrogate in double
+// (cor_surrogate::gamma_for, docs/surrogate.md): about a microsecond; exit 2 for a law
+// without a surrogate, a load outside its domain, or a target outside 0.01 <= e < 1.
 #include "cli_common.hpp"
 #include "command_registry.hpp"
 #include "physical_options.hpp"
+#include "surrogate_files.hpp"
 
+#include <viscor/core/scaling.hpp>
 #include <viscor/scenes/calibration.hpp>
 
 #include <chrono>
@@ -19,6 +25,7 @@ struct calibrate_command {
   std::optional<std::string> target_e, g;
   std::string tolerance = "0", gamma_max = "100";
   int digits = 15;
+  std::string method = "solve";
 
   void run() {
     const contact_law model = law.resolve();
@@ -28,6 +35,8 @@ struct calibrate_command {
       throw invalid_parameter("give either --g (scaled) or the physical inputs (" + physical.given_names() +
                               "), not both");
     if (is_physical) physical.check("calibrate");
+    if (method == "surrogate") return run_surrogate(model, is_physical);
+    if (method != "solve") throw invalid_parameter("--method must be solve or surrogate, got '" + method + "'");
     with_working_precision(digits, [&]<class Real>() {
       calibration_options<Real> options;
       options.tolerance = parse_real<Real>(tolerance, "tolerance");
@@ -76,6 +85,64 @@ struct calibrate_command {
       output.emit(text.str(), j);
     });
   }
+
+  // gamma (and gamma0) from the committed surrogate's inverse, in double.
+  void run_surrogate(const contact_law& model, bool is_physical) {
+    const surrogate::cor_surrogate* s = find_surrogate(model);
+    if (!s || !s->bound.verified())
+      throw invalid_parameter("--method surrogate: no surrogate for " + model.describe() + " (looked in '" +
+                              surrogate_directory() + "'; docs/surrogate.md)");
+    const double target = parse_real<double>(*target_e, "target_e");
+    if (!(target >= 0.01 && target < 1))
+      throw invalid_parameter("--method surrogate: --target-e must be in [0.01, 1), got " + *target_e);
+    double g_value = 0, factor = 0, time_scale_s = 0;
+    json j;
+    j["command"] = "calibrate";
+    j["method"] = "surrogate";
+    j["law"] = law_json(model);
+    j["target_e"] = *target_e;
+    if (is_physical) {
+      const physical_parameters<double> in = physical.parameters<double>(model);
+      physical_parameters<double> p = in;
+      p.gamma0 = 1;  // gamma / gamma0 is the damping factor of eq. 2
+      const scaled_parameters<double> scaled = to_scaled(model, p);
+      g_value = scaled.g, factor = scaled.gamma, time_scale_s = scaled.time_scale;
+      j["physical"] = physical.echo();
+    } else {
+      g_value = g ? parse_real<double>(*g, "g") : 0.0;
+    }
+    if (!(g_value >= s->g_min && g_value <= s->g_max))
+      throw invalid_parameter("--method surrogate: g = " + number(g_value) + " is outside the surrogate's domain (" +
+                              number(s->g_min) + " <= g <= " + number(s->g_max) + ")");
+    const auto start = std::chrono::steady_clock::now();
+    const double gamma = s->gamma_for(target, g_value);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (!(gamma == gamma))
+      throw invalid_parameter("--method surrogate: no gamma in [0, " + number(s->gamma_max) + "] gives e = " +
+                              *target_e + " at g = " + number(g_value) + " (the surrogate's domain)");
+    const surrogate::surrogate_value v = (*s)(gamma, g_value);
+    j["gamma"] = number(gamma);
+    j["g"] = number(g_value);
+    j["e"] = number(v.e);
+    j["error_bound"] = surrogate_bound_json(*s);
+    j["precision"] = scalar_json<double>();
+    j["seconds"] = seconds;
+    std::ostringstream text;
+    text << "law        " << model.describe() << "\n"
+         << "target e   " << *target_e << "\n";
+    if (is_physical) {
+      j["gamma0"] = number(gamma / factor);
+      j["time_scale_s"] = number(time_scale_s);
+      text << "gamma0     " << number(gamma / factor) << "\n";
+    }
+    text << "gamma      " << number(gamma) << " (scaled; the surrogate's inverse)\n"
+         << "g          " << number(g_value) << " (scaled load)\n"
+         << "e          " << number(v.e) << " at gamma (surrogate)\n"
+         << "bound      |de| <= " << number(s->bound.abs_e) << " where e >= 1e-2 (measured maximum x "
+         << number(s->bound.safety_factor) << ", docs/surrogate.md)\n"
+         << "seconds    " << seconds << " s\n";
+    output.emit(text.str(), j);
+  }
 };
 
 void setup(CLI::App& app) {
@@ -89,6 +156,10 @@ void setup(CLI::App& app) {
       ->capture_default_str();
   app.add_option("--gamma-max", cmd->gamma_max, "largest scaled damping tried")->capture_default_str();
   app.add_option("--digits", cmd->digits, "working precision in decimal digits")->capture_default_str();
+  app.add_option("--method", cmd->method,
+                 "solve (root finding on the Taylor solve) or surrogate (the committed surrogate's inverse, "
+                 "double; docs/surrogate.md)")
+      ->capture_default_str();
   app.callback([cmd] { cmd->run(); });
 }
 

@@ -5,9 +5,11 @@
 #include "command_registry.hpp"
 #include "data_directory.hpp"
 #include "scene_json.hpp"
+#include "surrogate_files.hpp"
 
 #include <viscor/scenes/error_map.hpp>
 #include <viscor/scenes/scene.hpp>
+#include <viscor/surrogate/surrogate_source.hpp>
 
 #include <chrono>
 #include <cstdio>
@@ -92,6 +94,11 @@ struct scene_command {
     if (dir.empty()) dir = default_error_maps(), from = "the data directory";
     std::string map_note;
     const std::optional<error_map> map = find_map(dir, from, file.scene.law, map_note);
+    // The committed surrogate of the law, tried first where its bound meets the tolerance.
+    const surrogate::cor_surrogate* fitted = find_surrogate(file.scene.law);
+    std::optional<surrogate::surrogate_source> source;
+    if (fitted && fitted->bound.verified()) source.emplace(*fitted);
+    const std::string surrogate_note = source ? file.scene.law.name + ".surrogate (committed surrogate, tried first)" : "none";
     const bool as_json = output.as_json();
 
     with_working_precision(digits, [&]<class Real>() {
@@ -139,7 +146,7 @@ struct scene_command {
                  ',' + std::to_string(r.digits) + ',' + seconds_text(r.seconds) + '\n';
         }
         ++index;
-      });
+      }, source ? &*source : nullptr);
       const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       const double resolve_seconds = std::chrono::duration<double>(resolved - start).count();
 
@@ -166,6 +173,7 @@ struct scene_command {
               << (s.relative ? " (relative on 1 - e)" : " (absolute on e)") << ", " << decimal_digits<Real>()
               << " working digits\n"
               << "error map  " << map_note << "\n"
+              << "surrogate  " << surrogate_note << "\n"
               << "methods   " << method_text.str() << "\n"
               << "sticking   " << sticking << "\n"
               << "max empirical bound  " << to_decimal_string(worst_bound, 3) << "\n"
@@ -197,6 +205,7 @@ struct scene_command {
         j["bound"] = s.relative ? "relative_one_minus_e" : "absolute";
         j["precision"] = scalar_json<Real>();
         j["error_map"] = map_note;
+        j["surrogate"] = surrogate_note;
         j["impacts"] = index, j["sticking_impacts"] = sticking, j["methods"] = method_json;
         j["seconds"] = total;
         j["rows"] = std::move(rows);

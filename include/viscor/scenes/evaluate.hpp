@@ -6,6 +6,12 @@
 // checked by) comparisons with independent references (tests/evaluate_test.cpp on
 // a sample in the default suite, tests/evaluate_slow_test.cpp on 500 points).
 // Methods, tried in order of cost; the first whose bound meets the tolerance wins:
+//   0. a surrogate (evaluate_options::surrogate, a fast_cor: core/fast_cor.hpp;
+//      docs/surrogate.md), only inside its domain. Bound: its stated bound (measured
+//      maximum over >= 20,000 certified points it was not fitted to x a safety
+//      factor): |de| where e >= 1e-2, else |de^2| / e_s; for a stick sqrt(|de^2|);
+//      relative on 1 - e its own relative bound where gamma <= 1e-2. Never within
+//      |e_s^2| < 1e-8 of the threshold, where its outcome is not verified.
 //   1. a double-precision approximation (eqs. 22, 23, 25, then Prop. 2 with
 //      Chebyshev-Beta, then quadrature coefficients) -- only inside a cell of an
 //      error map (error_map.hpp) for this law. Bound: the cell's, 4 x the largest
@@ -48,6 +54,7 @@
 #include <viscor/scenes/error_map.hpp>
 #include <viscor/exact/exact_solutions.hpp>
 #include <viscor/core/exceptions.hpp>
+#include <viscor/core/fast_cor.hpp>
 #include <viscor/core/parameters.hpp>
 #include <viscor/core/precision.hpp>
 #include <viscor/core/real_io.hpp>
@@ -75,6 +82,7 @@ enum class evaluation_method {
   exact,             ///< a closed form (exact_cor)
   taylor,            ///< solve_impact at `digits`
   certified,         ///< certify at `digits`
+  surrogate,         ///< a surrogate (evaluate_options::surrogate), double
 };
 
 /// The method's name as printed in JSON and scene files.
@@ -88,6 +96,7 @@ inline std::string to_string(evaluation_method m) {
     case evaluation_method::exact: return "exact";
     case evaluation_method::taylor: return "taylor";
     case evaluation_method::certified: return "certified";
+    case evaluation_method::surrogate: return "surrogate";
   }
   return "?";
 }
@@ -96,6 +105,7 @@ inline std::string to_string(evaluation_method m) {
 struct evaluate_options {
   bool relative = false;            ///< bound relative on 1 - e instead of absolute on e
   const error_map* map = nullptr;   ///< approximations are used only inside its cells
+  const fast_cor* surrogate = nullptr;  ///< tried first, inside its domain (must outlive the evaluator)
   bool need_contact_time = false;   ///< only methods that compute T_f (not the approximations)
   bool allow_certify = true;        ///< certify below 1e-15
   int max_attempts = 5;             ///< solves (methods 3-4) before giving up
@@ -302,6 +312,10 @@ class evaluator {
                                 m_law.describe());
       m_approx.emplace(m_law);
     }
+    if (m_options.surrogate && (m_options.surrogate->alpha() != m_law.alpha.to_string() ||
+                                m_options.surrogate->beta() != m_law.beta.to_string()))
+      throw invalid_parameter("the surrogate is for alpha = " + m_options.surrogate->alpha() + ", beta = " +
+                              m_options.surrogate->beta() + ", not for " + m_law.describe());
     if (m_options.max_attempts < 1) throw invalid_parameter("parameter max_attempts must be >= 1");
   }
 
@@ -328,6 +342,7 @@ class evaluator {
 
  private:
   evaluation<Real> compute(const Real& gamma, const Real& g, const Real& tolerance) const {
+    if (auto a = by_surrogate(gamma, g, tolerance)) return *a;
     if (auto a = by_approximation(gamma, g, tolerance)) return *a;
     const std::string tol_text = to_decimal_string(tolerance);
     // Closed forms exist only on special lines; closed_form_for says which.
@@ -346,6 +361,31 @@ class evaluator {
       }
     }
     return by_solving(gamma, g, tolerance, tol_text);
+  }
+
+  // Method 0: the surrogate's value where its stated bound meets the tolerance.
+  std::optional<evaluation<Real>> by_surrogate(const Real& gamma, const Real& g, const Real& tolerance) const {
+    if (!m_options.surrogate || m_options.need_contact_time) return std::nullopt;
+    const fast_cor_bound b = m_options.surrogate->bound();
+    if (!b.verified) return std::nullopt;
+    const double gd = detail::to_double(gamma), ggd = detail::to_double(g);
+    // Only at points that are doubles: the surrogate takes its inputs in double.
+    if (!(Real(gd) == gamma && Real(ggd) == g)) return std::nullopt;
+    const fast_cor_value v = m_options.surrogate->at(gd, ggd);
+    if (!v.in_domain || !(std::abs(v.e_squared) >= b.uncertain_e_squared)) return std::nullopt;
+    const bool stick = v.outcome == impact_outcome::stick;
+    double abs_bound = stick ? std::sqrt(b.abs_e_squared)
+                             : v.e >= 1.01e-2 ? b.abs_e : b.abs_e_squared / v.e;  // |de| = |de^2| / (e_s + e)
+    Real bound = detail::as_requested(Real(abs_bound), Real(v.one_minus_e), m_options.relative);
+    if (m_options.relative && !stick && gd <= b.small_gamma && v.e >= 1.01e-2 && Real(b.rel_one_minus_e) < bound)
+      bound = Real(b.rel_one_minus_e);
+    if (!(bound <= tolerance)) return std::nullopt;
+    evaluation<Real> r;
+    r.e = Real(v.e), r.one_minus_e = Real(v.one_minus_e), r.outcome = v.outcome;
+    r.empirical_bound = bound;
+    r.method = evaluation_method::surrogate;
+    r.digits = decimal_digits<double>();
+    return r;
   }
 
   std::optional<evaluation<Real>> by_approximation(const Real& gamma, const Real& g, const Real& tolerance) const {

@@ -256,12 +256,14 @@ struct scene_row {
 };
 
 /// Evaluates every impact of a resolved scene, with `map` (may be null) for the
-/// approximations. `each` is called with every row in order.
+/// approximations and `surrogate` (may be null) tried first. `each` is called with
+/// every row in order.
 template <class Real, class F>
-void run_scene(const resolved_scene<Real>& s, const error_map* map, F&& each) {
+void run_scene(const resolved_scene<Real>& s, const error_map* map, F&& each, const fast_cor* surrogate = nullptr) {
   evaluate_options options;
   options.relative = s.relative;
   options.map = map;
+  options.surrogate = surrogate;
   options.need_contact_time = s.contact_time;
   const evaluator<Real> ev(s.law, options);
   physical_parameters<Real> p;

@@ -52,15 +52,20 @@ struct patch_tree {
   std::vector<patch> patches;
   std::vector<double> coefficients;  ///< patch p: [p * order^2, (p + 1) * order^2)
 
-  /// The interpolant at (x, y), which must lie in the box.
-  double operator()(double x, double y) const noexcept {
+  /// The index of the patch that holds (x, y).
+  std::int32_t locate(double x, double y) const noexcept {
     std::int32_t i = 0;
     while (nodes[static_cast<std::size_t>(i)].dim != 2) {
       const node& n = nodes[static_cast<std::size_t>(i)];
       const double v = n.dim == 0 ? x : y;
       i = n.child + (v >= n.split ? 1 : 0);
     }
-    const std::int32_t p = nodes[static_cast<std::size_t>(i)].child;
+    return nodes[static_cast<std::size_t>(i)].child;
+  }
+
+  /// The interpolant at (x, y), which must lie in the box.
+  double operator()(double x, double y) const noexcept {
+    const std::int32_t p = locate(x, y);
     const patch& q = patches[static_cast<std::size_t>(p)];
     const double* c = coefficients.data() + static_cast<std::size_t>(p) * static_cast<std::size_t>(order * order);
     return clenshaw_2d(c, order, (x - q.cx) * q.sx, (y - q.cy) * q.sy);
@@ -155,47 +160,100 @@ struct cor_surrogate {
 
   /// The inverse for calibration: the gamma in [0, gamma_max] at which e(gamma, g) =
   /// e_target, for 0.01 <= e_target < 1; NaN if e_target or g is outside that range or
-  /// no gamma in the domain reaches e_target. Solves w G(w) = 1 - e_target^2 (w = gamma
-  /// or r, increasing) by the Illinois variant of regula falsi on the surrogate itself,
-  /// so the result is as accurate as the surrogate (about 10 evaluations).
+  /// no gamma in the domain reaches e_target. Solves w G(w) = D = 1 - e_target^2 (w =
+  /// gamma or r, w G increasing in w) on the surrogate itself, so the result is as
+  /// accurate as the surrogate, by Newton's method started from w G(0) = D, inside a
+  /// bracket that every step narrows (bisection when a step leaves it). G and dG/dw
+  /// come from the patch restricted to the line of fixed g: one 1-D Chebyshev series
+  /// per patch visited, so a Newton step costs a short Clenshaw sum, not a 2-D one.
   double gamma_for(double e_target, double g) const noexcept {
     const double nan = std::numeric_limits<double>::quiet_NaN();
     if (!(e_target >= 0.01 && e_target < 1) || !(g >= g_min && g <= g_max)) return nan;
     const double dissipated = (1 - e_target) * (1 + e_target);
-    if (g <= g_split)
-      return solve_increasing([&](double gamma) { return gamma * low_load(gamma, g) - dissipated; }, gamma_max);
+    if (!(dissipated > 0)) return 0;
+    if (g <= g_split) return solve_dissipation(low_load, /*x_free=*/true, g, dissipated, gamma_max);
     const double x = std::log(g), gc = std::exp(log_gamma_c(x));
-    const double r = solve_increasing([&](double r) { return r * high_load(x, std::sqrt(1 - r)) - dissipated; },
-                                      std::min(1.0, gamma_max / gc));
-    return r * gc;
+    return solve_dissipation(high_load, /*x_free=*/false, x, dissipated, std::min(1.0, gamma_max / gc)) * gc;
   }
 
  private:
-  // The root of an increasing f on [0, b] with f(0) < 0; NaN if f(b) < 0.
-  template <class F>
-  static double solve_increasing(F f, double b) noexcept {
-    double a = 0, fa = f(a), fb = f(b);
-    if (fb < 0) return std::numeric_limits<double>::quiet_NaN();
-    if (fb == 0) return b;
-    int side = 0;
-    for (int i = 0; i < 100; ++i) {
-      const double c = (a * fb - b * fa) / (fb - fa);
-      if (!(c > a && c < b)) return c == a || c == b ? c : (a + b) / 2;
-      const double fc = f(c);
-      // |f| is the error in 1 - e^2: 4 eps of it is below what the fit carries.
-      if (std::abs(fc) <= 4 * std::numeric_limits<double>::epsilon()) return c;
-      if (fc < 0) {
-        a = c, fa = fc;
-        if (side == -1) fb /= 2;  // Illinois: the same end twice, halve the other's weight
-        side = -1;
+  // One patch of a tree restricted to a line of its fixed coordinate: G as a
+  // Chebyshev series in t = (z - c) s on [lo, hi] of the free coordinate z.
+  struct slice {
+    std::int32_t patch = -1;
+    double c = 0, s = 1, lo = 0, hi = 0;
+    int n = 0;
+    double a[64] = {};
+
+    void build(const patch_tree& tree, bool x_free, double fixed, double z) noexcept {
+      patch = x_free ? tree.locate(z, fixed) : tree.locate(fixed, z);
+      const auto& q = tree.patches[static_cast<std::size_t>(patch)];
+      const std::size_t N = static_cast<std::size_t>(tree.order);
+      n = tree.order;
+      const double* coef = tree.coefficients.data() + static_cast<std::size_t>(patch) * N * N;
+      // T_k at the fixed coordinate's position in the patch
+      const double u = x_free ? (fixed - q.cy) * q.sy : (fixed - q.cx) * q.sx;
+      double T[64];
+      T[0] = 1, T[1] = u;
+      for (std::size_t k = 2; k < N; ++k) T[k] = 2 * u * T[k - 1] - T[k - 2];
+      for (std::size_t i = 0; i < N; ++i) a[i] = 0;
+      if (x_free) {  // coefficient (i, j): T_i(x) T_j(y); y fixed
+        for (std::size_t i = 0; i < N; ++i)
+          for (std::size_t j = 0; j < N; ++j) a[i] += coef[i * N + j] * T[j];
+        c = q.cx, s = q.sx;
       } else {
-        b = c, fb = fc;
-        if (side == 1) fa /= 2;
-        side = 1;
+        for (std::size_t i = 0; i < N; ++i)
+          for (std::size_t j = 0; j < N; ++j) a[j] += coef[i * N + j] * T[i];
+        c = q.cy, s = q.sy;
       }
-      if (b - a <= 4 * std::numeric_limits<double>::epsilon() * b) break;
+      lo = c - 1 / s, hi = c + 1 / s;
     }
-    return (a * fb - b * fa) / (fb - fa);
+    bool holds(double z) const noexcept { return patch >= 0 && z >= lo && z < hi; }
+    // G and dG/dz at z (Clenshaw with its derivative).
+    void value(double z, double& G, double& dG) const noexcept {
+      const double t = (z - c) * s, two_t = 2 * t;
+      double b1 = 0, b2 = 0, d1 = 0, d2 = 0;
+      for (int k = n - 1; k >= 1; --k) {
+        const double b0 = std::fma(two_t, b1, a[k] - b2);
+        const double d0 = 2 * b1 + two_t * d1 - d2;
+        b2 = b1, b1 = b0, d2 = d1, d1 = d0;
+      }
+      G = std::fma(t, b1, a[0] - b2);
+      dG = (b1 + t * d1 - d2) * s;
+    }
+  };
+
+  // The w in [0, b] with w G(w) = D; the free coordinate is z = w (low loads, x_free) or
+  // z = sqrt(1 - w) (high loads). NaN if b G(b) < D.
+  static double solve_dissipation(const patch_tree& tree, bool x_free, double fixed, double D, double b) noexcept {
+    constexpr double eps = std::numeric_limits<double>::epsilon();
+    slice sl;
+    // f(w) = w G(w) - D and f'(w)
+    auto f = [&](double w, double& df) {
+      const double z = x_free ? w : std::sqrt(1 - w);
+      const double zc = x_free ? std::min(std::max(z, tree.x0), tree.x1) : std::min(std::max(z, tree.y0), tree.y1);
+      if (!sl.holds(zc)) sl.build(tree, x_free, fixed, zc);
+      double G, dGdz;
+      sl.value(z, G, dGdz);
+      const double dGdw = x_free ? dGdz : (z > 0 ? -dGdz / (2 * z) : 0.0);
+      df = G + w * dGdw;
+      return w * G - D;
+    };
+    double df = 0;
+    if (f(b, df) < 0) return std::numeric_limits<double>::quiet_NaN();
+    double neg = 0, pos = b;
+    f(0, df);  // df = G(0)
+    double w = std::min(D / df, b);
+    for (int i = 0; i < 40; ++i) {
+      const double fw = f(w, df);
+      if (fw == 0) return w;
+      (fw < 0 ? neg : pos) = w;
+      double next = w - fw / df;
+      if (!(next > neg && next < pos)) next = (neg + pos) / 2;  // safeguard
+      if (std::abs(next - w) <= 2 * eps * w || pos - neg <= 2 * eps * pos) return next;
+      w = next;
+    }
+    return w;
   }
 
   static surrogate_value stick(surrogate_value v, double e_squared) noexcept {

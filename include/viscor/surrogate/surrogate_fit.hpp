@@ -125,8 +125,23 @@ class truth {
 #endif
   }
 
+#if VISCOR_HAS_FLOAT128
+  /// The signed e^2 from a float128 solve, computed in float128; empty if it fails its check.
+  std::optional<quad> signed_e_squared_quad(const quad& gamma, const quad& g) {
+    ++solves, ++quad_solves;
+    try {
+      const auto r = solve_impact<quad>(m_law, gamma, g);
+      if (r.outcome == impact_outcome::rebound) return r.e * r.e;
+      const quad u = r.stop_overlap, a = m_law.alpha.value<quad>();
+      return 2 * (pow(u, a + 1) / (a + 1) - g * u);
+    } catch (const certification_error&) {
+      return std::nullopt;
+    }
+  }
+#endif
+
   const contact_law& law() const { return m_law; }
-  std::size_t solves = 0;
+  std::size_t solves = 0, quad_solves = 0;
 
  private:
   template <class Real>
@@ -183,10 +198,40 @@ long double bisect_threshold(long double lo, long double hi, Sticks sticks) {
   return (lo + hi) / 2;
 }
 
+/// The zero of a decreasing f on [lo, hi] (f(lo) > 0 > f(hi)) by the Illinois
+/// variant of regula falsi, until the bracket is below `rel` relative to hi.
+template <class Real, class F>
+Real illinois_zero(F f, Real lo, Real hi, Real f_lo, Real f_hi, Real rel) {
+  int side = 0;
+  for (int i = 0; i < 100 && hi - lo > rel * hi; ++i) {
+    Real c = (lo * f_hi - hi * f_lo) / (f_hi - f_lo);
+    if (!(c > lo && c < hi)) c = (lo + hi) / 2;
+    const Real fc = f(c);
+    if (fc == 0) return c;
+    if (fc > 0) {
+      lo = c, f_lo = fc;
+      if (side == 1) f_hi /= 2;
+      side = 1;
+    } else {
+      hi = c, f_hi = fc;
+      if (side == -1) f_lo /= 2;
+      side = -1;
+    }
+  }
+  return (lo * f_hi - hi * f_lo) / (f_hi - f_lo);
+}
+
 /// gamma_c(g): expands a bracket around `guess`, then finds the zero of the signed e^2
 /// (e^2 on the rebound side, its continuation past the threshold on the other, a
 /// smooth decreasing function of gamma through the threshold) by the Illinois
 /// variant of regula falsi: about 10 solves instead of 60 for bisection.
+/// Two phases: long double to relative 1e-12, then float128 from a bracket of
+/// relative 1e-11 around that estimate (widened until float128 confirms the signs) to
+/// long double resolution. NOTE: long double alone is not enough: within ~1e-13 of
+/// the threshold at large g it can return the wrong outcome without failing its
+/// energy check, and the continuation past the threshold cancels (u_s^(alpha+1) and
+/// g u_s are ~g^(1 + 1/alpha)), so the long double thresholds were noisy at ~2e-13
+/// near g = 2000 and the threshold fit could not converge there.
 inline long double critical_gamma_at(truth& t, long double g, long double guess) {
   long double lo = guess, hi = guess;
   long double f_lo = t.signed_e_squared(lo, g), f_hi = f_lo;
@@ -201,23 +246,32 @@ inline long double critical_gamma_at(truth& t, long double g, long double guess)
     f_hi = t.signed_e_squared(hi, g);
   }
   if (lo == guess && hi == guess) lo = hi / 2, f_lo = t.signed_e_squared(lo, g);
-  int side = 0;
-  for (int i = 0; i < 100 && hi - lo > 4 * std::numeric_limits<long double>::epsilon() * hi; ++i) {
-    long double c = (lo * f_hi - hi * f_lo) / (f_hi - f_lo);
-    if (!(c > lo && c < hi)) c = (lo + hi) / 2;
-    const long double fc = t.signed_e_squared(c, g);
-    if (fc == 0) return c;
-    if (fc > 0) {
-      lo = c, f_lo = fc;
-      if (side == 1) f_hi /= 2;
-      side = 1;
-    } else {
-      hi = c, f_hi = fc;
-      if (side == -1) f_lo /= 2;
-      side = -1;
-    }
+  const long double estimate = illinois_zero<long double>(
+      [&](long double c) { return t.signed_e_squared(c, g); }, lo, hi, f_lo, f_hi, 1e-12L);
+#if VISCOR_HAS_FLOAT128
+  const quad gq(g);
+  quad width = quad(1e-11L);
+  for (int widen = 0;; ++widen, width *= 10) {
+    if (widen > 8) throw convergence_error("surrogate fit: float128 cannot bracket the threshold at g = " + std::to_string(static_cast<double>(g)));
+    const quad qlo = quad(estimate) * (1 - width), qhi = quad(estimate) * (1 + width);
+    const auto fq_lo = t.signed_e_squared_quad(qlo, gq), fq_hi = t.signed_e_squared_quad(qhi, gq);
+    if (!fq_lo || !fq_hi) return estimate;  // float128 cannot decide at 1e-11: keep long double's answer
+    if (!(*fq_lo > 0 && *fq_hi < 0)) continue;
+    const quad rel = quad(std::numeric_limits<long double>::epsilon()) / 4;
+    std::optional<quad> failed;
+    const quad c = illinois_zero<quad>(
+        [&](const quad& x) -> quad {
+          if (failed) return quad(0);
+          const auto f = t.signed_e_squared_quad(x, gq);
+          if (!f) failed = x;  // float128 cannot decide: so close that x is the answer
+          return f ? *f : quad(0);
+        },
+        qlo, qhi, *fq_lo, *fq_hi, rel);
+    return static_cast<long double>(failed ? *failed : c);
   }
-  return (lo * f_hi - hi * f_lo) / (f_hi - f_lo);
+#else
+  return estimate;
+#endif
 }
 
 /// ln gamma_c(ln g) on [x0, x1] by adaptively halved Chebyshev intervals.

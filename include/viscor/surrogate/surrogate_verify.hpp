@@ -99,6 +99,8 @@ struct region_errors {
   std::size_t wrong_outcomes = 0;  ///< outside the exempt band around the threshold
   std::size_t exempt = 0;          ///< within relative 1e-10 (in g) of the threshold
   std::size_t outside_domain = 0;
+  std::size_t judged_by_absolute_digits = 0;  ///< rebounds below min_certified_digits, still precise enough
+  std::size_t left_out = 0;  ///< rebounds whose certified digits cannot decide any check
   reference_value worst_e, worst_e_squared, worst_rel;
 };
 
@@ -113,21 +115,56 @@ inline bool near_threshold_in_g(const cor_surrogate& s, double gamma, double g, 
   return std::abs(std::log(gamma / s.critical_gamma(g))) <= band * std::max(slope, 1e-3);
 }
 
+/// Which checks a certified row can decide. A row certified to d significant digits
+/// (of e and 1 - e) carries an absolute uncertainty of about 10^(1-d) e in e. Rows with
+/// d >= min_certified_digits decide every check. Below that (rebounds close to the
+/// threshold, where the relative digits of e fall) a check is still decided when the
+/// row's uncertainty in the compared quantity is at most 1e-3 of its target: then the
+/// measured error is the surrogate's to within 0.1% of the target.
+struct applicable_checks {
+  bool abs_e = false, abs_e_squared = false, rel_one_minus_e = false;
+  bool full = false;  ///< certified to min_certified_digits or more (or a stick)
+  /// Whether the row decides any check.
+  bool any() const noexcept { return abs_e || abs_e_squared || rel_one_minus_e; }
+};
+
+/// Which checks a certified row decides (see applicable_checks).
+inline applicable_checks checks_for(const reference_value& r, const surrogate_targets& t, int min_certified_digits) {
+  applicable_checks c;
+  const bool small_gamma = r.gamma <= t.small_gamma && r.e >= 1e-2L && r.one_minus_e > 0;
+  if (r.outcome == impact_outcome::stick || r.digits >= min_certified_digits) {
+    c.full = true;
+    c.abs_e = r.outcome == impact_outcome::rebound && r.e >= 1e-2L;
+    c.abs_e_squared = true;
+    c.rel_one_minus_e = small_gamma;
+    return c;
+  }
+  const long double rel = std::pow(10.0L, 1 - r.digits);  // relative uncertainty of e and of 1 - e
+  const long double u_e = rel * r.e;
+  c.abs_e = r.e >= 1e-2L && u_e <= 1e-3L * t.abs_e;
+  c.abs_e_squared = u_e * (2 * r.e + u_e) <= 1e-3L * t.abs_e_squared;
+  c.rel_one_minus_e = small_gamma && rel <= 1e-3L * t.rel_one_minus_e;
+  return c;
+}
+
 /// The worst errors of the surrogate against certified reference values, per region (region_names order).
 inline std::vector<region_errors> compare_with_reference(const cor_surrogate& s, const std::vector<reference_value>& refs,
-                                                         const surrogate_targets& targets) {
+                                                         const surrogate_targets& targets, int min_certified_digits) {
   std::vector<region_errors> regions;
-  for (const char* name : region_names) regions.push_back({name});
+  for (const char* name : region_names) {
+    regions.emplace_back();
+    regions.back().name = name;
+  }
   for (const auto& r : refs) {
     const bool in[5] = {true, r.gamma <= targets.small_gamma, near_threshold_in_g(s, r.gamma, r.g, 0.05),
                         r.g >= 100, r.g < 0};
     const surrogate_value v = s(r.gamma, r.g);
     const bool exempt = near_threshold_in_g(s, r.gamma, r.g, 1e-10);
-    const double e_true = static_cast<double>(r.e);
     const double err_e = std::abs(static_cast<double>(static_cast<long double>(v.e) - r.e));
     const double err_e2 = std::abs(static_cast<double>(static_cast<long double>(v.e) * v.e - r.e * r.e));
+    const applicable_checks check = checks_for(r, targets, min_certified_digits);
     double err_rel = 0;
-    if (r.gamma <= targets.small_gamma && e_true >= 1e-2 && r.one_minus_e > 0)
+    if (check.rel_one_minus_e)
       err_rel = std::abs(static_cast<double>((static_cast<long double>(v.one_minus_e) - r.one_minus_e) / r.one_minus_e));
     for (std::size_t k = 0; k < regions.size(); ++k) {
       if (!in[k]) continue;
@@ -135,9 +172,13 @@ inline std::vector<region_errors> compare_with_reference(const cor_surrogate& s,
       ++reg.points;
       if (!v.in_domain) { ++reg.outside_domain; continue; }
       if (exempt) { ++reg.exempt; continue; }
-      if (v.outcome != r.outcome) ++reg.wrong_outcomes;
-      if (r.outcome == impact_outcome::rebound && e_true >= 1e-2 && err_e > reg.abs_e) reg.abs_e = err_e, reg.worst_e = r;
-      if (err_e2 > reg.abs_e_squared) reg.abs_e_squared = err_e2, reg.worst_e_squared = r;
+      if (v.outcome != r.outcome) ++reg.wrong_outcomes;  // a certified outcome needs no digits of e
+      if (!check.full) {
+        if (!check.any()) { ++reg.left_out; continue; }
+        ++reg.judged_by_absolute_digits;
+      }
+      if (check.abs_e && err_e > reg.abs_e) reg.abs_e = err_e, reg.worst_e = r;
+      if (check.abs_e_squared && err_e2 > reg.abs_e_squared) reg.abs_e_squared = err_e2, reg.worst_e_squared = r;
       if (err_rel > reg.rel_one_minus_e) reg.rel_one_minus_e = err_rel, reg.worst_rel = r;
     }
   }
