@@ -15,6 +15,8 @@ packages=(
   python3-matplotlib        # tools/plot_reference.py figures
   lammps liggghts           # DEM programs run by tests/dem_drop_*test.cpp (issue 15)
   doxygen                   # API reference: cmake --build build --target doc (issue 13)
+  pybind11-dev python3-dev  # Python module viscor (issue 16, docs/python.md)
+  python3-numpy python3-mpmath  # its vectorised evaluate and tests; Result.mpf
 )
 
 missing=()
