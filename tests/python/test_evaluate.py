@@ -4,11 +4,13 @@ broadcasting; bad points; concurrent calls from Python threads give the serial
 results, which are themselves checked against the exact values."""
 
 import math
+import os
+import tempfile
 import threading
 import unittest
 
 import viscor
-from viscor_test_support import numpy as np, reference_rows
+from viscor_test_support import numpy as np, reference_rows, write_synthetic_surrogate
 
 
 def linear_e_at_zero_load(gamma):
@@ -110,6 +112,44 @@ class Shapes(unittest.TestCase):
             viscor.evaluate("tsuji", "abc", 0, 1e-6)
         with self.assertRaises(ValueError):
             viscor.evaluate(None, 0.1, 0, 1e-6, alpha="1/2", beta="1")
+
+
+@unittest.skipIf(np is None, "needs NumPy (python3-numpy)")
+class SurrogatePlumbing(unittest.TestCase):
+    """A synthetic surrogate (values known by construction, deliberately not the true
+    e) shows which path each point took; tests/python/test_commands.py checks the
+    committed surrogates against certified tables when they exist."""
+
+    def test_used_where_its_bound_meets_tol_and_in_domain(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            path = write_synthetic_surrogate(os.path.join(tmp, "linear.surrogate"), G=0.5, abs_e=1e-3)
+            s = viscor.Surrogate(path)
+            self.assertTrue(s.in_domain(0.1, 0.5))
+            self.assertEqual(s.error_bound["abs_e"], 1e-3)
+            gamma = np.array([0.1, 0.3, 0.1, 0.8])
+            g = np.array([0.0, 0.5, 0.0, 0.0])
+            tol = np.array([1e-2, 1e-2, 1e-6, 1e-2])
+            r = viscor.evaluate("linear", gamma, g, tol, surrogate=path)
+            names = [viscor.EVALUATION_METHODS[m] for m in r.method]
+            self.assertEqual(names[:2], ["surrogate", "surrogate"])
+            self.assertNotEqual(names[2], "surrogate")  # its bound 1e-3 misses tol 1e-6
+            self.assertNotEqual(names[3], "surrogate")  # gamma = 0.8 is outside its domain
+            synthetic = np.sqrt(1 - 0.5 * gamma)
+            self.assertTrue(np.allclose(r.e[:2], synthetic[:2], rtol=0, atol=1e-15))
+            self.assertTrue(np.all(r.empirical_bound[:2] == 1e-3))
+            true_e = linear_e_at_zero_load(gamma[[2, 3]])
+            self.assertTrue(np.all(np.abs(r.e[[2, 3]] - true_e) <= r.empirical_bound[[2, 3]] + 4e-16))
+            self.assertEqual(float(s(0.3, 0.5)["e"]), r.e[1])
+            with self.assertRaises(viscor.ParseError):
+                with open(os.path.join(tmp, "bad.surrogate"), "w") as f:
+                    f.write("viscor-cor-surrogate 1\nlaw linear 1 1\ndomain x\n")
+                viscor.Surrogate(os.path.join(tmp, "bad.surrogate"))
+
+    def test_true_needs_a_committed_file(self):
+        if viscor.find_surrogate("hunt_crossley") is not None:
+            self.skipTest("a surrogate is committed")
+        with self.assertRaises(viscor.InvalidParameter):
+            viscor.evaluate("hunt_crossley", 0.1, 0.5, 1e-4, surrogate=True)
 
 
 @unittest.skipIf(np is None, "needs NumPy (python3-numpy)")

@@ -66,3 +66,17 @@ def linear_law_e(gamma, g, dps=70):
                 return -du(root), root
             t_prev, u_prev = t, ut
         raise ValueError("no return to u = 0 within 2 pi / w")
+
+
+def write_synthetic_surrogate(path, G=0.5, abs_e=1e-3):
+    """A surrogate file for the linear law whose values are known by construction,
+    to test the plumbing (not a fit): one low-load patch on gamma in [0, 0.5],
+    g in [0, 1] with the constant G = (1 - e^2) / gamma, so e = sqrt(1 - G gamma),
+    and a claimed, 'verified' bound abs_e. The format is that of
+    include/viscor/surrogate/cor_surrogate.hpp (write_cor_surrogate)."""
+    tree = "{name} 0 0.5 0 1 2 1 1\n2 0 0\n0.25 4 0.5 2\n{c} 0\n0 0\n"
+    with open(path, "w") as f:
+        f.write("viscor-cor-surrogate 1\nlaw linear 1 1\ndomain 0.5 0 1\nsplit 1.5 1\n"
+                f"bound {abs_e!r} {abs_e!r} {abs_e!r} 4\nthreshold 2 2\n0 1\n0 0\n"
+                + tree.format(name="low_load", c=repr(G)) + tree.format(name="high_load", c="0") + "end\n")
+    return path
