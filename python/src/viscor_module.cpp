@@ -282,7 +282,11 @@ py::tuple evaluate(const evaluate_request& q, py::array_t<double, py::array::c_s
     if (!q.error_maps.empty() && !q.law.name.empty()) {
       const std::filesystem::path path = std::filesystem::path(q.error_maps) / (q.law.name + ".csv");
       if (std::filesystem::exists(path)) map = read_error_map(path.string());
+      if (map && map->cells().empty()) map.reset();  // nothing to vouch for (and at() would rebuild every call)
     }
+    // NOTE: error_map::at builds its index on the first call (mutable members, no
+    // lock): one call here, before the workers share the map, so they only read it.
+    if (map) (void)map->at(0, 0);
     evaluate_options options;
     options.relative = q.relative;
     options.map = map ? &*map : nullptr;
