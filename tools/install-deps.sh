@@ -16,6 +16,8 @@ packages=(
   lammps liggghts           # DEM programs run by tests/dem_drop_*test.cpp (issue 15)
   doxygen                   # API reference: cmake --build build --target doc (issue 13)
   libflint-arb-dev          # Arb ball arithmetic: proven enclosures, include/viscor/enclose (issue 17)
+  pybind11-dev python3-dev  # Python module viscor (issue 16, docs/python.md)
+  python3-numpy python3-mpmath  # its vectorised evaluate and tests; Result.mpf
 )
 
 missing=()

@@ -5,6 +5,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <functional>
 #include <string>
 #include <vector>
@@ -27,5 +28,25 @@ struct registration {
     commands().push_back({std::move(name), std::move(help), std::move(setup)});
   }
 };
+
+/// Adds every registered subcommand to `app` (sorted by name) and refuses empty
+/// values for every option: `--g ''` must not mean g = 0. Used by main.cpp and by
+/// the Python module's in-process runner, so both parse alike.
+inline void add_commands(CLI::App& app) {
+  auto& cmds = commands();
+  std::sort(cmds.begin(), cmds.end(), [](const auto& a, const auto& b) { return a.name < b.name; });
+  for (auto& c : cmds) c.setup(*app.add_subcommand(c.name, c.help));
+  static const CLI::Validator non_empty(
+      [](std::string& value) {
+        return value.empty() ? std::string("empty value (give a value or leave the option out)") : std::string();
+      },
+      "", "NON_EMPTY");
+  const auto refuse_empty = [](auto& self, CLI::App& a) -> void {
+    for (CLI::Option* option : a.get_options())
+      if (option->get_type_size() != 0) option->check(non_empty);
+    for (CLI::App* sub : a.get_subcommands([](CLI::App*) { return true; })) self(self, *sub);
+  };
+  refuse_empty(refuse_empty, app);
+}
 
 }  // namespace viscor::cli

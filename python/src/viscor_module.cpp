@@ -1,0 +1,435 @@
+// viscor._viscor: the compiled part of the Python module (docs/python.md).
+//   cor       one CoR at a working precision (solve_impact, optionally certify), as
+//             the JSON object of `viscor cor --json` (a dict of decimal strings)
+//   run       any subcommand of the CLI in-process (the same code, files and
+//             messages), returning what it prints
+//   evaluate  accuracy-driven e over arrays of points in double, on worker threads
+//             without the GIL (scenes/evaluate.hpp, optionally a surrogate first)
+//   surrogate a CoR surrogate file, evaluated in double
+// viscor's exceptions become the Python exceptions created here (ValueError
+// subclasses for bad input), with the library's messages.
+#include "certify_output.hpp"
+#include "cli_common.hpp"
+#include "command_registry.hpp"
+#include "cor_points.hpp"
+#include "data_directory.hpp"
+#include "surrogate_files.hpp"
+
+#include <viscor/core/precision.hpp>
+#include <viscor/impact/solve_impact.hpp>
+#include <viscor/scenes/error_map.hpp>
+#include <viscor/scenes/evaluate.hpp>
+#include <viscor/surrogate/cor_surrogate.hpp>
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <mutex>
+#include <optional>
+#include <sstream>
+#include <thread>
+#include <vector>
+
+namespace py = pybind11;
+
+namespace viscor::python {
+namespace {
+
+using json = cli::json;
+
+// ---- exceptions ----
+
+struct python_exceptions {
+  PyObject* error = nullptr;                  // viscor.Error: every error of the library
+  PyObject* invalid_parameter = nullptr;      // viscor.InvalidParameter(Error, ValueError)
+  PyObject* precision_unavailable = nullptr;  // (InvalidParameter)
+  PyObject* parse_error = nullptr;            // (InvalidParameter)
+  PyObject* convergence_error = nullptr;      // (Error, RuntimeError)
+  PyObject* certification_error = nullptr;    // (Error, RuntimeError)
+};
+python_exceptions exceptions;
+
+PyObject* new_exception(py::module_& m, const char* name, std::initializer_list<PyObject*> bases, const char* doc) {
+  py::tuple base_tuple(bases.size());
+  std::size_t i = 0;
+  for (PyObject* b : bases) base_tuple[i++] = py::reinterpret_borrow<py::object>(b);
+  const std::string qualified = std::string("viscor.") + name;
+  PyObject* type = PyErr_NewExceptionWithDoc(qualified.c_str(), doc, base_tuple.ptr(), nullptr);
+  if (!type) throw py::error_already_set();
+  m.add_object(name, py::reinterpret_borrow<py::object>(type));
+  return type;
+}
+
+void register_exceptions(py::module_& m) {
+  exceptions.error = new_exception(m, "Error", {PyExc_Exception}, "Base class of every viscor error.");
+  exceptions.invalid_parameter = new_exception(m, "InvalidParameter", {exceptions.error, PyExc_ValueError},
+                                               "Bad input: the message names the offending value.");
+  exceptions.precision_unavailable = new_exception(m, "PrecisionUnavailable", {exceptions.invalid_parameter},
+                                                   "A precision (digits, tolerance) this build cannot provide.");
+  exceptions.parse_error =
+      new_exception(m, "ParseError", {exceptions.invalid_parameter}, "A file or text that cannot be read.");
+  exceptions.convergence_error = new_exception(m, "ConvergenceError", {exceptions.error, PyExc_RuntimeError},
+                                               "A computation that did not converge.");
+  exceptions.certification_error = new_exception(m, "CertificationError", {exceptions.error, PyExc_RuntimeError},
+                                                 "Digits or a bound that could not be certified.");
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const precision_unavailable& e) {
+      PyErr_SetString(exceptions.precision_unavailable, e.what());
+    } catch (const parse_error& e) {
+      PyErr_SetString(exceptions.parse_error, e.what());
+    } catch (const invalid_parameter& e) {
+      PyErr_SetString(exceptions.invalid_parameter, e.what());
+    } catch (const convergence_error& e) {
+      PyErr_SetString(exceptions.convergence_error, e.what());
+    } catch (const certification_error& e) {
+      PyErr_SetString(exceptions.certification_error, e.what());
+    } catch (const error& e) {
+      PyErr_SetString(exceptions.error, e.what());
+    } catch (const CLI::ParseError& e) {  // run(): an option the subcommand does not know, or a bad value
+      PyErr_SetString(exceptions.invalid_parameter, e.what());
+    }
+  });
+}
+
+// ---- inputs ----
+
+// The law from a name, or from alpha and beta (decimal or p/q).
+contact_law resolve_law(const std::string& name, const std::string& alpha, const std::string& beta) {
+  if (!name.empty()) {
+    if (!alpha.empty() || !beta.empty())
+      throw invalid_parameter("give either the law's name or alpha and beta, not both (got law '" + name + "')");
+    return law_by_name(name);
+  }
+  if (alpha.empty() || beta.empty()) throw invalid_parameter("the contact law needs a name, or both alpha and beta");
+  return make_law(exponent::parse(alpha, "alpha"), exponent::parse(beta, "beta"));
+}
+
+// A decimal, or p/q (a fraction whose decimal expansion does not end: p / q correctly
+// rounded when p and q are exact in Real).
+template <class Real>
+Real parse_value(const std::string& text, const std::string& name) {
+  const auto slash = text.find('/');
+  if (slash == std::string::npos) return parse_real<Real>(text, name);
+  const Real p = parse_real<Real>(text.substr(0, slash), name), q = parse_real<Real>(text.substr(slash + 1), name);
+  if (q == 0) throw invalid_parameter("parameter " + name + " = " + text + " divides by zero");
+  return Real(p / q);
+}
+
+// nlohmann JSON -> Python objects (numbers stay decimal strings where the CLI writes strings).
+py::object to_python(const json& j) {
+  switch (j.type()) {
+    case json::value_t::object: {
+      py::dict d;
+      for (const auto& [key, value] : j.items()) d[py::str(key)] = to_python(value);
+      return d;
+    }
+    case json::value_t::array: {
+      py::list l;
+      for (const auto& value : j) l.append(to_python(value));
+      return l;
+    }
+    case json::value_t::string: return py::str(j.get<std::string>());
+    case json::value_t::boolean: return py::bool_(j.get<bool>());
+    case json::value_t::number_integer: return py::int_(j.get<long long>());
+    case json::value_t::number_unsigned: return py::int_(j.get<unsigned long long>());
+    case json::value_t::number_float: return py::float_(j.get<double>());
+    default: return py::none();
+  }
+}
+
+// ---- cor ----
+
+struct cor_request {
+  std::string name, alpha, beta, gamma, g = "0", method = "taylor", tolerance = "0";
+  int digits = 50;
+  bool certify = false;
+  std::size_t max_steps = solve_options<double>{}.max_steps;
+};
+
+// The object of `viscor cor --json` for one scaled point (cmd_cor.cpp, the same fields).
+json cor_json(const cor_request& q) {
+  const contact_law law = resolve_law(q.name, q.alpha, q.beta);
+  if (q.method != "taylor" && q.method != "adaptive")
+    throw invalid_parameter("method must be 'taylor' or 'adaptive', got '" + q.method + "'");
+  if (q.max_steps < 1) throw invalid_parameter("max_steps must be >= 1, got 0");
+  json j;
+  with_working_precision(q.digits, [&]<class Real>() {
+    const Real gamma = parse_value<Real>(q.gamma, "gamma"), g = parse_value<Real>(q.g, "g");
+    solve_options<Real> options;
+    options.method = q.method == "taylor" ? integration_method::taylor : integration_method::adaptive;
+    options.tolerance = parse_real<Real>(q.tolerance, "tolerance");
+    options.max_steps = q.max_steps;
+    const auto start = std::chrono::steady_clock::now();
+    const impact_result<Real> r = solve_impact(law, gamma, g, options);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    j["command"] = "cor";
+    j["law"] = cli::law_json(law);
+    j["gamma"] = cli::number(gamma);
+    j["g"] = cli::number(g);
+    j["precision"] = cli::scalar_json<Real>();
+    cli::add_result_json(j, r, seconds);
+    if (q.certify) {
+      std::ostringstream ignored_text;
+      cli::certify_and_report<Real>(law, gamma, g, ignored_text, j);
+    }
+  });
+  return j;
+}
+
+py::object cor(const cor_request& q) {
+  json j;
+  {
+    py::gil_scoped_release release;  // the working precision is per thread (scoped_precision)
+    j = cor_json(q);
+  }
+  return to_python(j);
+}
+
+// ---- run: a subcommand in-process ----
+
+std::mutex run_mutex;  // std::cout is redirected for the call: one run at a time
+
+std::string run(const std::vector<std::string>& args) {
+  py::gil_scoped_release release;
+  const std::lock_guard<std::mutex> lock(run_mutex);
+  CLI::App app{"viscor"};
+  app.require_subcommand(1);
+  cli::add_commands(app);
+  std::vector<const char*> argv{"viscor"};
+  for (const std::string& a : args) argv.push_back(a.c_str());
+  std::ostringstream captured;
+  std::streambuf* const saved = std::cout.rdbuf(captured.rdbuf());
+  try {
+    app.parse(static_cast<int>(argv.size()), argv.data());
+  } catch (const CLI::ParseError& e) {
+    std::cout.rdbuf(saved);
+    if (e.get_exit_code() != 0) throw;
+    std::ostringstream help, ignored;  // --help: the text is the result
+    app.exit(e, help, ignored);
+    return help.str();
+  } catch (...) {
+    std::cout.rdbuf(saved);
+    throw;
+  }
+  std::cout.rdbuf(saved);
+  return captured.str();
+}
+
+// ---- evaluate over arrays ----
+
+// Codes of the method array: evaluation_method in enum order, then the surrogate.
+constexpr std::int8_t surrogate_method = static_cast<std::int8_t>(evaluation_method::certified) + 1;
+
+std::vector<std::string> method_names() {
+  std::vector<std::string> names;
+  for (int k = 0; k < surrogate_method; ++k) names.push_back(to_string(static_cast<evaluation_method>(k)));
+  names.push_back("surrogate");
+  return names;
+}
+
+// The surrogate's value at (gamma, g) when its bound meets the tolerance, where the
+// bound applies (docs/surrogate.md): absolute on e for e >= 1e-2; relative on 1 - e
+// for gamma <= 1e-2 and e >= 1e-2. Sticking verdicts go to evaluate.
+std::optional<evaluation<double>> by_surrogate(const surrogate::cor_surrogate& s, double gamma, double g, double tol,
+                                               bool relative) {
+  if (!s.bound.verified()) return std::nullopt;
+  const surrogate::surrogate_value v = s(gamma, g);
+  if (!v.in_domain || v.outcome != impact_outcome::rebound || !(v.e >= 1e-2)) return std::nullopt;
+  const double bound = relative ? s.bound.rel_one_minus_e : s.bound.abs_e;
+  if (relative && !(gamma <= 1e-2)) return std::nullopt;
+  if (!(bound <= tol)) return std::nullopt;
+  evaluation<double> r;
+  r.e = v.e, r.one_minus_e = v.one_minus_e, r.outcome = v.outcome, r.empirical_bound = bound;
+  r.relative = relative, r.digits = 15;
+  return r;
+}
+
+struct evaluate_request {
+  contact_law law;
+  bool relative = false;
+  std::string error_maps;  // directory of <law>.csv, "" for none
+  std::shared_ptr<const surrogate::cor_surrogate> surrogate;
+  unsigned threads = 0;  // 0: every core
+};
+
+py::tuple evaluate(const evaluate_request& q, py::array_t<double, py::array::c_style | py::array::forcecast> gamma,
+                   py::array_t<double, py::array::c_style | py::array::forcecast> g,
+                   py::array_t<double, py::array::c_style | py::array::forcecast> tol) {
+  const py::ssize_t n = gamma.size();
+  if (g.size() != n || tol.size() != n)
+    throw invalid_parameter("evaluate: gamma, g and tol must have the same size after broadcasting");
+  py::array_t<double> e(n), one_minus_e(n), bound(n);
+  py::array_t<std::int8_t> method(n), outcome(n);
+  const double* pg = gamma.data();
+  const double* pgg = g.data();
+  const double* pt = tol.data();
+  double* pe = e.mutable_data();
+  double* pome = one_minus_e.mutable_data();
+  double* pb = bound.mutable_data();
+  std::int8_t* pm = method.mutable_data();
+  std::int8_t* po = outcome.mutable_data();
+  {
+    py::gil_scoped_release release;
+    std::optional<error_map> map;
+    if (!q.error_maps.empty() && !q.law.name.empty()) {
+      const std::filesystem::path path = std::filesystem::path(q.error_maps) / (q.law.name + ".csv");
+      if (std::filesystem::exists(path)) map = read_error_map(path.string());
+      if (map && map->cells().empty()) map.reset();  // nothing to vouch for (and at() would rebuild every call)
+    }
+    // NOTE: error_map::at builds its index on the first call (mutable members, no
+    // lock): one call here, before the workers share the map, so they only read it.
+    if (map) (void)map->at(0, 0);
+    evaluate_options options;
+    options.relative = q.relative;
+    options.map = map ? &*map : nullptr;
+    const evaluator<double> evaluate_one(q.law, options);
+    // Points are handed out in blocks; the first failing point (lowest index) is reported.
+    std::atomic<py::ssize_t> next{0};
+    std::mutex failure_mutex;
+    py::ssize_t failed_at = n;
+    std::string failure;
+    int failure_kind = 0;  // 0 invalid_parameter, 1 precision, 2 certification, 3 convergence, 4 other
+    auto worker = [&] {
+      constexpr py::ssize_t block = 256;
+      for (py::ssize_t first = next.fetch_add(block); first < n; first = next.fetch_add(block)) {
+        const py::ssize_t last = std::min(n, first + block);
+        for (py::ssize_t i = first; i < last; ++i) {
+          try {
+            std::optional<evaluation<double>> r;
+            if (q.surrogate && std::isfinite(pg[i]) && std::isfinite(pgg[i]) && pg[i] >= 0 && pgg[i] >= 0)
+              r = by_surrogate(*q.surrogate, pg[i], pgg[i], pt[i], q.relative);
+            const bool from_surrogate = r.has_value();
+            if (!r) r = evaluate_one(pg[i], pgg[i], pt[i]);
+            pe[i] = r->e, pome[i] = r->one_minus_e, pb[i] = r->empirical_bound;
+            pm[i] = from_surrogate ? surrogate_method : static_cast<std::int8_t>(r->method);
+            po[i] = r->outcome == impact_outcome::stick ? 1 : 0;
+          } catch (const std::exception& ex) {
+            const std::lock_guard<std::mutex> lock(failure_mutex);
+            if (i < failed_at) {
+              failed_at = i;
+              failure = ex.what();
+              failure_kind = dynamic_cast<const precision_unavailable*>(&ex)   ? 1
+                             : dynamic_cast<const invalid_parameter*>(&ex)     ? 0
+                             : dynamic_cast<const certification_error*>(&ex)   ? 2
+                             : dynamic_cast<const convergence_error*>(&ex)     ? 3
+                                                                               : 4;
+            }
+            next.store(n);  // stop the others early
+            return;
+          }
+        }
+      }
+    };
+    unsigned threads = q.threads ? q.threads : std::max(1u, std::thread::hardware_concurrency());
+    threads = static_cast<unsigned>(std::min<py::ssize_t>(threads, std::max<py::ssize_t>(1, n / 64)));
+    std::vector<std::thread> pool;
+    for (unsigned t = 1; t < threads; ++t) pool.emplace_back(worker);
+    worker();
+    for (std::thread& t : pool) t.join();
+    if (failed_at < n) {
+      const std::string message = "evaluate: point " + std::to_string(failed_at) + " (gamma = " +
+                                  to_decimal_string(pg[failed_at], 17) + ", g = " + to_decimal_string(pgg[failed_at], 17) +
+                                  ", tol = " + to_decimal_string(pt[failed_at], 3) + "): " + failure;
+      switch (failure_kind) {
+        case 0: throw invalid_parameter(message);
+        case 1: throw precision_unavailable(message);
+        case 2: throw certification_error(message);
+        case 3: throw convergence_error(message);
+        default: throw error(message);
+      }
+    }
+  }
+  return py::make_tuple(e, one_minus_e, bound, method, outcome);
+}
+
+}  // namespace
+}  // namespace viscor::python
+
+PYBIND11_MODULE(_viscor, m) {
+  using namespace viscor::python;
+  namespace vp = viscor::python;
+  m.doc() = "viscor's compiled core (use the package viscor; docs/python.md)";
+  register_exceptions(m);
+  m.attr("version") = VISCOR_VERSION;
+  m.attr("git_commit") = viscor::git_commit();
+  m.attr("max_working_digits") = viscor::max_working_digits;
+  m.attr("evaluation_methods") = method_names();
+
+  m.def(
+      "cor",
+      [](const std::string& name, const std::string& alpha, const std::string& beta, const std::string& gamma,
+         const std::string& g, int digits, bool certify, const std::string& method, const std::string& tolerance,
+         long long max_steps) {
+        if (max_steps < 0) throw viscor::invalid_parameter("max_steps must be >= 1, got " + std::to_string(max_steps));
+        cor_request q;
+        q.name = name, q.alpha = alpha, q.beta = beta, q.gamma = gamma, q.g = g, q.digits = digits;
+        q.certify = certify, q.method = method, q.tolerance = tolerance;
+        if (max_steps > 0) q.max_steps = static_cast<std::size_t>(max_steps);  // 0: the library's default
+        return vp::cor(q);
+      },
+      py::arg("name"), py::arg("alpha"), py::arg("beta"), py::arg("gamma"), py::arg("g"), py::arg("digits"),
+      py::arg("certify"), py::arg("method"), py::arg("tolerance"), py::arg("max_steps"),
+      "One CoR: the object of `viscor cor --json` as a dict (decimal strings).");
+
+  m.def("run", &vp::run, py::arg("args"),
+        "Runs `viscor ARGS...` in-process and returns what it prints; raises on errors.");
+
+  m.def("data_directory", [] { return viscor::cli::data_directory(); },
+        "The data directory (certified tables, error maps) the CLI code would use.");
+  m.def("default_error_maps", [] { return viscor::cli::default_error_maps(); },
+        "The error maps directory of the data directory, or ''.");
+
+  py::class_<viscor::surrogate::cor_surrogate, std::shared_ptr<viscor::surrogate::cor_surrogate>>(m, "Surrogate")
+      .def(py::init([](const std::string& path) {
+             return std::make_shared<viscor::surrogate::cor_surrogate>(viscor::surrogate::read_cor_surrogate(path));
+           }),
+           py::arg("path"), "Reads a surrogate file (reference_data/surrogates/<law>.surrogate).")
+      .def("in_domain", &viscor::surrogate::cor_surrogate::in_domain, py::arg("gamma"), py::arg("g"))
+      .def("critical_gamma", &viscor::surrogate::cor_surrogate::critical_gamma, py::arg("g"))
+      .def("gamma_for", &viscor::surrogate::cor_surrogate::gamma_for, py::arg("e"), py::arg("g"))
+      .def(
+          "__call__",
+          [](const viscor::surrogate::cor_surrogate& s, double gamma, double g) {
+            const viscor::surrogate::surrogate_value v = s(gamma, g);
+            py::dict d;
+            d["in_domain"] = v.in_domain;
+            if (!v.in_domain) return d;
+            d["outcome"] = std::string(viscor::to_string(v.outcome));
+            d["e"] = v.e;
+            d["one_minus_e"] = v.one_minus_e;
+            d["e_squared"] = v.e_squared;
+            return d;
+          },
+          py::arg("gamma"), py::arg("g"))
+      .def_property_readonly("error_bound", [](const viscor::surrogate::cor_surrogate& s) {
+        return vp::to_python(viscor::cli::surrogate_bound_json(s));
+      });
+
+  py::class_<evaluate_request>(m, "Evaluator")
+      .def(py::init([](const std::string& name, const std::string& alpha, const std::string& beta, bool relative,
+                       const std::string& error_maps,
+                       std::shared_ptr<viscor::surrogate::cor_surrogate> surrogate, unsigned threads) {
+             evaluate_request q;
+             q.law = resolve_law(name, alpha, beta);
+             q.law.validate();
+             q.relative = relative;
+             if (!error_maps.empty() && !std::filesystem::is_directory(error_maps))
+               throw viscor::invalid_parameter("error_maps: '" + error_maps + "' is not a directory");
+             q.error_maps = error_maps;
+             q.surrogate = std::move(surrogate);
+             q.threads = threads;
+             return q;
+           }),
+           py::arg("name"), py::arg("alpha"), py::arg("beta"), py::arg("relative"), py::arg("error_maps"),
+           py::arg("surrogate"), py::arg("threads"))
+      .def("__call__", &vp::evaluate, py::arg("gamma"), py::arg("g"), py::arg("tol"),
+           "Flat float64 arrays of one size -> (e, one_minus_e, bound, method code, outcome code).");
+}

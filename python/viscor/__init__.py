@@ -1,0 +1,73 @@
+"""viscor: certified coefficient of restitution of visco-elastic impacts under load.
+
+Python bindings of the C++ library (docs/python.md). Scaled model:
+    u'' + gamma d/dtau(u_+^beta) + u_+^alpha = g,  u(0) = 0, u'(0) = 1;  e = -u'(T_f).
+
+    >>> import viscor
+    >>> r = viscor.cor('kuwabara_kono', '0.05', '1', digits=50)
+    >>> r.e                      # the exact decimal string at 50 digits
+    >>> r.decimal('one_minus_e')  # decimal.Decimal
+
+Field names are those of the JSON output (docs/json-schema.md). Bad input raises
+InvalidParameter (a ValueError) with the library's message.
+"""
+
+import os as _os
+
+from . import _viscor
+from ._viscor import (CertificationError, ConvergenceError, Error, InvalidParameter, ParseError,
+                      PrecisionUnavailable, Surrogate)
+from ._inputs import NAMED_LAWS, check_digits as _check_digits, law_texts as _law_texts, number_text as _text
+from ._result import Result
+from ._commands import approx, calibrate, dem, exact, run_cli, scale, scene, table, read_table, find_surrogate
+from ._evaluate import EVALUATION_METHODS, Evaluation, evaluate
+
+try:  # written by cmake --install: the installed data directory (the build tree's module reads reference_data/)
+    from ._installed import DATA_DIR as _INSTALLED_DATA_DIR
+    if not _os.environ.get("VISCOR_DATA") and _os.path.isdir(_INSTALLED_DATA_DIR):
+        _os.environ["VISCOR_DATA"] = _INSTALLED_DATA_DIR
+except ImportError:
+    pass
+
+__version__ = _viscor.version
+git_commit = _viscor.git_commit
+max_working_digits = _viscor.max_working_digits
+
+__all__ = ["cor", "exact", "approx", "calibrate", "scale", "table", "read_table", "scene", "dem", "evaluate",
+           "Evaluation", "EVALUATION_METHODS", "Surrogate", "find_surrogate", "run_cli", "Result", "NAMED_LAWS",
+           "Error", "InvalidParameter", "PrecisionUnavailable", "ParseError", "ConvergenceError",
+           "CertificationError", "data_directory"]
+
+
+def cor(law=None, gamma=None, g=0, digits=50, certify=False, *, alpha=None, beta=None, method="taylor",
+        tolerance="0", max_steps=None):
+    """The coefficient of restitution of one impact at `digits` working digits.
+
+    law: a name (NAMED_LAWS), or alpha= and beta= (str such as '3/2', Fraction, int,
+    Decimal). gamma, g: str, int, Decimal, Fraction or float (a float is its exact
+    binary value). certify=True adds ``certified`` (the digits three computations
+    agree on), as ``viscor cor --certify``. Returns a Result with the fields of
+    ``viscor cor --json``: e, one_minus_e, outcome, contact_time, max_compression,
+    time_of_max_compression, energy_residual, error_estimate, steps, method,
+    seconds, gamma, g, law, precision (and stop_overlap for a stick).
+    """
+    if gamma is None:
+        raise TypeError("cor() needs gamma")
+    name, a, b = _law_texts(law, alpha, beta)
+    if not isinstance(certify, bool):
+        raise TypeError(f"certify must be True or False, got {certify!r}")
+    if method not in ("taylor", "adaptive"):
+        raise InvalidParameter(f"method must be 'taylor' or 'adaptive', got {method!r}")
+    if max_steps is None:
+        max_steps = 0  # the library's default
+    elif isinstance(max_steps, bool) or not isinstance(max_steps, int) or not 1 <= max_steps <= 10**12:
+        raise InvalidParameter(f"max_steps must be a whole number from 1 to 1e12, got {max_steps!r}")
+    fields = _viscor.cor(name, a, b, _text(gamma, "gamma"), _text(g, "g"), _check_digits(digits), certify, method,
+                         _text(tolerance, "tolerance"), max_steps)
+    return Result(fields)
+
+
+def data_directory():
+    """The data directory in use (certified tables, error maps): $VISCOR_DATA, the
+    installed share/viscor, or the source tree's reference_data/."""
+    return _viscor.data_directory()

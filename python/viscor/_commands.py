@@ -1,0 +1,140 @@
+"""The subcommands that read or write files, or convert units, run in-process.
+
+Each function runs the CLI's own code (`viscor <command> ... --json`) inside this
+process, so options, files, messages and JSON field names are exactly the
+CLI's (docs/cli.md, docs/json-schema.md). Keyword arguments are the CLI's
+options with '-' written '_' (gravity=9.8, youngs_modulus='2e11', target_e='0.9');
+None leaves an option out, True gives a flag.
+"""
+
+import csv
+import json
+import os
+
+from . import _viscor
+from ._inputs import check_digits, law_texts, number_text
+from ._result import Result
+
+
+def run_cli(*args):
+    """Runs ``viscor ARGS...`` in this process and returns what it prints.
+
+    Errors raise the exceptions of viscor (InvalidParameter for bad options or
+    values) instead of exiting.
+    """
+    for a in args:
+        if not isinstance(a, str):
+            raise TypeError(f"run_cli takes strings (the command line's words), got {a!r}")
+    return _viscor.run(list(args))
+
+
+def _options(**options):
+    words = []
+    for key, value in options.items():
+        if value is None or value is False:
+            continue
+        flag = "--" + key.replace("_", "-")
+        if value is True:
+            words.append(flag)
+        elif isinstance(value, (list, tuple)):
+            words += [flag, ",".join(number_text(v, key) for v in value)]
+        elif isinstance(value, os.PathLike):
+            words += [flag, os.fspath(value)]
+        else:
+            words += [flag, number_text(value, key)]
+    return words
+
+
+def _law_options(law, alpha, beta):
+    name, a, b = law_texts(law, alpha, beta)
+    return (["--model", name] if name else []) + (["--alpha", a] if a else []) + (["--beta", b] if b else [])
+
+
+def _json_command(command, law_words, **options):
+    if "digits" in options and options["digits"] is not None:
+        options["digits"] = check_digits(options["digits"])
+    text = run_cli(command, *law_words, *_options(**options), "--json")
+    return Result(json.loads(text))
+
+
+def exact(law=None, gamma=0, g=0, digits=15, *, alpha=None, beta=None):
+    """The closed-form CoR where one exists (``viscor exact``): Result with exists,
+    formula, e, one_minus_e, outcome, contact_time, max_compression, ..."""
+    return _json_command("exact", _law_options(law, alpha, beta), gamma=gamma, g=g, digits=digits)
+
+
+def approx(law=None, gamma=None, g=0, formula=None, *, alpha=None, beta=None, source=None, order=None, digits=None):
+    """The report's approximate formulas (``viscor approx``): small_g, large_g,
+    schwager_poschel, prop2, ... (formula='surrogate': the committed surrogate)."""
+    if gamma is None:
+        raise TypeError("approx() needs gamma")
+    return _json_command("approx", _law_options(law, alpha, beta), gamma=gamma, g=g, formula=formula,
+                         source=source, order=order, digits=digits)
+
+
+def calibrate(law=None, target_e=None, g=None, *, alpha=None, beta=None, digits=15, **options):
+    """The damping that gives a target CoR (``viscor calibrate``): scaled with g, or
+    physical with m, k (or youngs_modulus, poisson_ratio, radius, density), v0,
+    gravity, force. Also tolerance, gamma_max."""
+    if target_e is None:
+        raise TypeError("calibrate() needs target_e")
+    return _json_command("calibrate", _law_options(law, alpha, beta), target_e=target_e, g=g, digits=digits,
+                         **options)
+
+
+def scale(law=None, *, alpha=None, beta=None, digits=15, **options):
+    """Physical <-> scaled parameters, eq. (2) (``viscor scale``): m, k (or the
+    material), v0, gravity, force, and gamma0 (-> gamma, g) or gamma and g
+    (-> gamma0, force)."""
+    return _json_command("scale", _law_options(law, alpha, beta), digits=digits, **options)
+
+
+def dem(code, *, digits=None, **options):
+    """Damping entries for a DEM deck (``viscor dem``, docs/dem.md): code 'lammps'
+    or 'liggghts'; damping, contact, youngs_modulus, poisson_ratio, radius,
+    density, target_e (or deck_damping), v0, gravity, force, speeds."""
+    if not isinstance(code, str):
+        raise TypeError(f"dem() needs the DEM code as a string ('lammps' or 'liggghts'), got {code!r}")
+    return _json_command("dem", [code], digits=digits, **options)
+
+
+def scene(file, out=None, *, error_maps=None):
+    """Every impact of a scene file to its tolerance (``viscor scene``, docs/scenes.md).
+
+    Without `out`: the Result of ``--json``. With `out`: writes it (CSV, or JSON
+    when it ends in .json) like ``-o``, only on success, and returns the path."""
+    words = ["scene", os.fspath(file)] + _options(error_maps=error_maps)
+    if out is None:
+        return Result(json.loads(run_cli(*words, "--json")))
+    run_cli(*words, "-o", os.fspath(out))
+    return os.fspath(out)
+
+
+def table(spec, out, *, resume=False, shard=None, threads=None, quiet=True, sticking=False):
+    """A certified reference table from a grid spec (``viscor table SPEC -o OUT``,
+    docs/tables.md): writes OUT (CSV) and OUT.json (its sidecar); returns OUT.
+    sticking=True computes sticking thresholds (``viscor table sticking``)."""
+    words = ["table"] + (["sticking"] if sticking else []) + [os.fspath(spec), "-o", os.fspath(out)]
+    words += _options(resume=resume, shard=shard, threads=threads, quiet=quiet)
+    run_cli(*words)
+    return os.fspath(out)
+
+
+def read_table(path):
+    """The rows of a viscor CSV table (a certified table of reference_data/, or
+    one written by table()) as dicts of strings, with its sidecar (or None)."""
+    with open(path, newline="") as f:
+        rows = list(csv.DictReader(line for line in f if not line.startswith("#")))
+    sidecar = None
+    if os.path.exists(os.fspath(path) + ".json"):
+        with open(os.fspath(path) + ".json") as f:
+            sidecar = json.load(f)
+    return rows, sidecar
+
+
+def find_surrogate(law):
+    """The committed surrogate of a named law (a Surrogate), or None: read from
+    $VISCOR_SURROGATE_DIR, else <data directory>/surrogates/<law>.surrogate."""
+    directory = os.environ.get("VISCOR_SURROGATE_DIR") or os.path.join(_viscor.data_directory(), "surrogates")
+    path = os.path.join(directory, f"{law}.surrogate")
+    return _viscor.Surrogate(path) if os.path.exists(path) else None

@@ -1,0 +1,72 @@
+"""Vectorised evaluation in double over NumPy arrays (scenes/evaluate.hpp)."""
+
+import collections
+import os
+
+from . import _viscor
+from ._inputs import law_texts
+
+#: Names of the codes in Evaluation.method: evaluate's methods in its order of cost
+#: (docs/scenes.md), then 'surrogate'.
+EVALUATION_METHODS = tuple(_viscor.evaluation_methods)
+
+Evaluation = collections.namedtuple("Evaluation", "e one_minus_e empirical_bound method outcome")
+Evaluation.__doc__ = """Arrays of the broadcast shape of (gamma, g, tol):
+e, one_minus_e, empirical_bound (float64; absolute on e, or relative on 1 - e with
+relative=True), method (int8 codes into EVALUATION_METHODS), outcome (int8: 0
+rebound, 1 stick)."""
+
+
+def evaluate(law=None, gamma=None, g=0.0, tol=1e-6, *, alpha=None, beta=None, relative=False, error_maps="default",
+             surrogate=None, threads=0):
+    """e with an empirical error bound <= tol at every point, over arrays.
+
+    gamma, g, tol: array-likes of float64, broadcast together (NumPy rules). Each
+    point is evaluate()d by the cheapest method whose bound meets its tol
+    (docs/scenes.md): an approximation inside an error map's cell, a closed form,
+    a Taylor solve. error_maps: 'default' (the data directory's error_maps/),
+    None (no approximations) or a directory. surrogate: None, True (the
+    committed surrogate of the law, docs/surrogate.md; an error if there is
+    none), a path or a Surrogate; it is used first wherever its verified bound
+    meets tol. threads: worker threads (0: every core); the GIL is released.
+
+    Raises InvalidParameter naming the first bad point (NaN, gamma < 0, ...).
+    """
+    import numpy as np
+
+    if gamma is None:
+        raise TypeError("evaluate() needs gamma")
+    name, a, b = law_texts(law, alpha, beta)
+    arrays = []
+    for label, value in (("gamma", gamma), ("g", g), ("tol", tol)):
+        try:
+            arrays.append(np.asarray(value, dtype=np.float64))
+        except (TypeError, ValueError) as error:
+            raise TypeError(f"evaluate: {label} must be numbers or an array of numbers, got {value!r}") from error
+    try:
+        gamma_b, g_b, tol_b = np.broadcast_arrays(*arrays)
+    except ValueError as error:
+        raise _viscor.InvalidParameter(f"evaluate: gamma {arrays[0].shape}, g {arrays[1].shape} and tol "
+                                       f"{arrays[2].shape} do not broadcast together") from error
+    shape = gamma_b.shape
+    flat = [np.ascontiguousarray(x).reshape(-1) for x in (gamma_b, g_b, tol_b)]
+
+    if error_maps == "default":
+        maps = _viscor.default_error_maps()
+    elif error_maps is None:
+        maps = ""
+    else:
+        maps = os.fspath(error_maps)
+    if surrogate is True:
+        from ._commands import find_surrogate
+        surrogate = find_surrogate(name) if name else None
+        if surrogate is None:
+            raise _viscor.InvalidParameter(f"evaluate: no committed surrogate for law {law!r} (docs/surrogate.md)")
+    elif surrogate is not None and not isinstance(surrogate, _viscor.Surrogate):
+        surrogate = _viscor.Surrogate(os.fspath(surrogate))
+    if isinstance(threads, bool) or not isinstance(threads, int) or threads < 0:
+        raise _viscor.InvalidParameter(f"evaluate: threads must be a whole number >= 0, got {threads!r}")
+
+    evaluator = _viscor.Evaluator(name, a, b, bool(relative), maps, surrogate, threads)
+    e, one_minus_e, bound, method, outcome = evaluator(*flat)
+    return Evaluation(*(x.reshape(shape) for x in (e, one_minus_e, bound, method, outcome)))

@@ -1,0 +1,108 @@
+"""Result: a JSON object of viscor (docs/json-schema.md) read as attributes."""
+
+import decimal
+
+
+class Result:
+    """The fields of one viscor JSON object, under their JSON names.
+
+    ``r.e`` is the exact decimal string the library printed (the working
+    precision's value), ``r.decimal('e')`` the same number as ``decimal.Decimal``,
+    ``r.mpf('e')`` as ``mpmath.mpf`` at the working binary precision (needs
+    mpmath). Nested objects (``r.law``, ``r.precision``, ``r.certified``) are
+    Results too; ``r.to_dict()`` gives the plain JSON data.
+    """
+
+    __slots__ = ("_fields", "_binary_digits")
+
+    def __init__(self, fields, binary_digits=None):
+        object.__setattr__(self, "_fields", dict(fields))
+        precision = fields.get("precision")
+        if isinstance(precision, dict) and "binary_digits" in precision:
+            binary_digits = precision["binary_digits"]
+        object.__setattr__(self, "_binary_digits", binary_digits)
+
+    def _wrap(self, value):
+        if isinstance(value, dict):
+            return Result(value, self._binary_digits)
+        if isinstance(value, list):
+            return [self._wrap(v) for v in value]
+        return value
+
+    def __getattr__(self, name):
+        try:
+            value = self._fields[name]
+        except KeyError:
+            raise AttributeError(f"no field {name!r} in this result (fields: {', '.join(self._fields)})") from None
+        return self._wrap(value)
+
+    def __setattr__(self, name, value):
+        raise AttributeError("viscor results are read-only")
+
+    def __getitem__(self, name):
+        return self._wrap(self._fields[name])
+
+    def __contains__(self, name):
+        return name in self._fields
+
+    def __iter__(self):
+        return iter(self._fields)
+
+    def __eq__(self, other):
+        return isinstance(other, Result) and self._fields == other._fields
+
+    __hash__ = None
+
+    def keys(self):
+        return self._fields.keys()
+
+    def get(self, name, default=None):
+        return self._wrap(self._fields.get(name, default))
+
+    def to_dict(self):
+        """The JSON data (decimal strings stay strings)."""
+        return _copy(self._fields)
+
+    def __repr__(self):
+        shown = ", ".join(f"{k}={v!r}" for k, v in self._fields.items() if not isinstance(v, (dict, list)))
+        return f"viscor.Result({shown})"
+
+    @property
+    def digits(self):
+        """Decimal digits: the working precision of a computation (precision.digits),
+        or, in a ``certified`` object, the certified significant digits."""
+        if "digits" in self._fields:
+            return self._fields["digits"]
+        precision = self._fields.get("precision")
+        if isinstance(precision, dict):
+            return precision.get("digits")
+        raise AttributeError("no field 'digits' in this result")
+
+    def decimal(self, name):
+        """Field `name` as decimal.Decimal, exactly the printed value (no rounding)."""
+        return decimal.Decimal(self._text(name))
+
+    def mpf(self, name):
+        """Field `name` as mpmath.mpf at the working binary precision (needs mpmath)."""
+        try:
+            import mpmath
+        except ImportError as error:
+            raise ImportError("Result.mpf needs mpmath (Debian: python3-mpmath); "
+                              "Result.decimal works without it") from error
+        bits = self._binary_digits or 53
+        with mpmath.workprec(max(int(bits), 53)):
+            return mpmath.mpf(self._text(name))
+
+    def _text(self, name):
+        value = self._fields[name]
+        if not isinstance(value, str):
+            raise TypeError(f"field {name!r} is {value!r}, not a decimal string")
+        return value
+
+
+def _copy(value):
+    if isinstance(value, dict):
+        return {k: _copy(v) for k, v in value.items()}
+    if isinstance(value, list):
+        return [_copy(v) for v in value]
+    return value

@@ -1,0 +1,152 @@
+"""The in-process subcommands (exact, approx, calibrate, scale, table, scene, dem,
+surrogate) against independent values: closed forms written here, eq. (2) written
+here, the committed certified tables, and the CLI binary's output for the same
+command (another front end, the same files)."""
+
+import decimal
+import json
+import math
+import os
+import subprocess
+import tempfile
+import unittest
+
+import viscor
+from viscor_test_support import CLI, REFERENCE_DATA, SOURCE_DIR, linear_law_e, mpmath, numpy as np, reference_rows
+
+
+def cli_json(*args):
+    return json.loads(subprocess.run([CLI, *args, "--json"], check=True, capture_output=True, text=True).stdout)
+
+
+class Exact(unittest.TestCase):
+    @unittest.skipIf(mpmath is None, "needs mpmath")
+    def test_linear_law(self):
+        r = viscor.exact("linear", "0.2", "0.1", digits=40)
+        self.assertTrue(r.exists)
+        e, t = linear_law_e("0.2", "0.1")
+        self.assertLess(abs(r.decimal("e") - decimal.Decimal(mpmath.nstr(e, 50))), decimal.Decimal("1e-36"))
+        self.assertLess(abs(r.decimal("contact_time") - decimal.Decimal(mpmath.nstr(t, 50))), decimal.Decimal("1e-35"))
+
+    def test_none_known(self):
+        r = viscor.exact("kuwabara_kono", "0.1", "1")
+        self.assertFalse(r.exists)
+
+
+@unittest.skipUnless(CLI, "VISCOR_CLI not set")
+class SameAsTheCli(unittest.TestCase):
+    def test_approx(self):
+        r = viscor.approx("kuwabara_kono", "0.01", "0.5")
+        cli = cli_json("approx", "--model", "kuwabara_kono", "--gamma", "0.01", "--g", "0.5")
+        self.assertEqual(r.to_dict(), cli)
+
+    def test_dem(self):
+        options = dict(damping="tsuji", youngs_modulus="3e9", poisson_ratio="0.35", radius="1e-3", density="1200",
+                       target_e="0.5", v0="0.01", gravity="9.81")
+        r = viscor.dem("lammps", **options)
+        cli = cli_json("dem", "lammps", *[w for k, v in options.items() for w in ("--" + k.replace("_", "-"), v)])
+        cli.pop("seconds", None)
+        mine = r.to_dict()
+        mine.pop("seconds", None)
+        self.assertEqual(mine, cli)
+
+
+class Scale(unittest.TestCase):
+    @unittest.skipIf(mpmath is None, "needs mpmath")
+    def test_equation_2(self):
+        m, k, v0, gamma0, gravity = "0.154", "3.6138e10", "1", "1.5237e-6", "9.8"
+        r = viscor.scale("kuwabara_kono", m=m, k=k, v0=v0, gamma0=gamma0, gravity=gravity, digits=30)
+        self.assertEqual(r.direction, "physical_to_scaled")
+        with mpmath.workdps(40):
+            M, K, V, G0, GR = map(mpmath.mpf, (m, k, v0, gamma0, gravity))
+            a, b = mpmath.mpf(3) / 2, mpmath.mpf(3) / 2
+            gamma = G0 * V ** (2 * b / (a + 1) - 1) * (K / M) ** (1 - b / (a + 1))
+            g = (M / K) ** (1 / (a + 1)) * V ** (-2 * a / (a + 1)) * GR
+            T = (M / K) ** (1 / (a + 1)) * V ** ((1 - a) / (a + 1))
+            for field, value in (("gamma", gamma), ("g", g), ("time_scale_s", T)):
+                mine = r.decimal(field)
+                ref = decimal.Decimal(mpmath.nstr(value, 35))
+                self.assertLess(abs(mine - ref) / ref, decimal.Decimal("1e-27"), field)
+        back = viscor.scale("kuwabara_kono", m=m, k=k, v0=v0, gravity=gravity, gamma=r.gamma, g=r.g, digits=30)
+        self.assertLess(abs(back.decimal("gamma0") - decimal.Decimal(gamma0)) / decimal.Decimal(gamma0),
+                        decimal.Decimal("1e-27"))
+
+
+class Calibrate(unittest.TestCase):
+    def test_linear_law_at_zero_load(self):
+        # e = exp(-gamma pi / (2 w)): gamma = 2 L / sqrt(pi^2 + L^2) with L = -ln e.
+        r = viscor.calibrate("linear", "0.9", g="0", digits=20)
+        L = -math.log(0.9)
+        exact_gamma = 2 * L / math.sqrt(math.pi**2 + L**2)
+        self.assertAlmostEqual(float(r.gamma), exact_gamma, delta=1e-12)
+        self.assertLessEqual(abs(float(r.e) - 0.9), float(r.e_error) + 1e-15)
+
+
+class Table(unittest.TestCase):
+    def test_spec_to_csv(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            spec = os.path.join(tmp, "spec.json")
+            with open(spec, "w") as f:
+                json.dump({"laws": ["linear", "kuwabara_kono"], "gamma": ["0.0137", "0.05"], "g": ["0", "1"],
+                           "digits": 36, "min_digits": 30}, f)
+            out = os.path.join(tmp, "t.csv")
+            self.assertEqual(viscor.table(spec, out, threads=1), out)
+            rows, sidecar = viscor.read_table(out)
+            self.assertEqual(len(rows), 8)
+            self.assertEqual(sidecar["rows_total"], 8)
+            committed = {(r["law"], r["gamma"], r["g"]): r for r in reference_rows()}
+            for row in rows:
+                ref = committed.get((row["law"], row["gamma"], row["g"]))
+                if ref is None:
+                    continue
+                digits = min(int(row["digits"]), int(ref["digits"]))
+                diff = abs(decimal.Decimal(row["e"]) - decimal.Decimal(ref["e"]))
+                self.assertLessEqual(diff, decimal.Decimal(10) ** (1 - digits), row)
+
+    def test_no_partial_output_on_error(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            spec = os.path.join(tmp, "spec.json")
+            with open(spec, "w") as f:
+                f.write('{"laws": ["linear"], "gamma": ["-1"], "g": ["0"]}')
+            with self.assertRaises(ValueError):
+                viscor.table(spec, os.path.join(tmp, "t.csv"))
+            self.assertFalse(os.path.exists(os.path.join(tmp, "t.csv")))
+
+
+class Scene(unittest.TestCase):
+    def test_steel_bead(self):
+        path = os.path.join(SOURCE_DIR, "docs", "examples", "steel_bead.json")
+        r = viscor.scene(path)
+        self.assertGreater(r.impacts, 0)
+        for row in r.rows:
+            self.assertLessEqual(float(row.empirical_bound), float(r.tolerance))
+        with tempfile.TemporaryDirectory() as tmp:
+            out = viscor.scene(path, os.path.join(tmp, "steel.csv"))
+            self.assertTrue(os.path.getsize(out) > 0)
+
+
+class Surrogate(unittest.TestCase):
+    def test_committed_surrogate(self):
+        law = "kuwabara_kono"
+        s = viscor.find_surrogate(law)
+        if s is None:
+            self.skipTest("no committed surrogate (reference_data/surrogates/) yet")
+        bound = s.error_bound
+        rows = [r for r in reference_rows() if r["law"] == law and r["outcome"] == "rebound"][::50]
+        checked = 0
+        for row in rows:
+            v = s(float(row["gamma"]), float(row["g"]))
+            if not v["in_domain"] or v["e"] < 1e-2 or "abs_e" not in bound:
+                continue
+            self.assertLessEqual(abs(v["e"] - float(row["e"])), bound["abs_e"] + 1e-15, row)
+            checked += 1
+        if np is not None and checked:
+            gamma = np.array([float(r["gamma"]) for r in rows])
+            g = np.array([float(r["g"]) for r in rows])
+            ev = viscor.evaluate(law, gamma, g, max(bound["abs_e"], 1e-12), surrogate=s)
+            ref = np.array([float(r["e"]) for r in rows])
+            self.assertTrue(np.all(np.abs(ev.e - ref) <= ev.empirical_bound + 1e-15))
+
+
+if __name__ == "__main__":
+    unittest.main()
