@@ -156,7 +156,7 @@ TEST(ApproximationRegression, CorruptedReferenceIsDetected) {
   EXPECT_FALSE(compare_to_baseline(now, baseline).failures.empty());
 }
 
-// The report's ranges: gamma_max = min(0.1, 1.1 gamma_c(g)); TABLES.md prints the g = 10 values.
+// The report's ranges: gamma_max = min(0.1, 1.1 gamma_c(g)); docs/report-notes.md lists the g = 10 values.
 TEST(ApproximationRegression, ReportGammaMaxMatchesTablesMd) {
   const std::vector<std::pair<std::string, double>> expected{{"hertz_linear_damping", 0.00553427},
                                                              {"tsuji", 0.00315879},

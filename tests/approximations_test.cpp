@@ -154,7 +154,7 @@ TYPED_TEST(Approximations, SchwagerPoschelIsKuwabaraKonoOnly) {
   const viscor::cor_approximations<Real> kk(viscor::law_by_name("kuwabara_kono"));
   EXPECT_TRUE(kk.is_kuwabara_kono());
   const Real gamma = Real(1) / 20;
-  // At g = 0 the SP coefficient equals Prop. 2's closed-form C2 (ERRATA.md).
+  // At g = 0 the SP coefficient equals Prop. 2's closed-form C2 (docs/report-notes.md).
   VISCOR_EXPECT_REL(kk.schwager_poschel(gamma, Real(0)),
                     kk.prop2(gamma, Real(0), coefficient_source::exact_at_zero).e_linearized, ulps<Real>(16));
   // Eq. (25): the small-g form plus the gamma^2 term.

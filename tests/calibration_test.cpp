@@ -127,7 +127,7 @@ TEST(calibration, kuwabara_kono_under_load_against_50_digits) {
 }
 
 TEST(calibration, physical_steel_bead_with_and_without_gravity) {
-  // The report's 8 mm steel bead (sec. 4.1, ERRATA.md), Kuwabara-Kono, e = 0.893.
+  // The report's 8 mm steel bead (sec. 4.1, docs/report-notes.md), Kuwabara-Kono, e = 0.893.
   const contact_law law = law_by_name("kuwabara_kono");
   const double m = 2.05e-3, k = 6.9716e9, v0 = 0.246, target = 0.893;
   calibration_options<double> options;
@@ -135,7 +135,7 @@ TEST(calibration, physical_steel_bead_with_and_without_gravity) {
   const physical_calibration<double> with = calibrate_gamma0(law, m, k, v0, 9.8, 0.0, target, options);
   const physical_calibration<double> without = calibrate_gamma0(law, m, k, v0, 0.0, 0.0, target, options);
   EXPECT_EQ(without.scaled.g, 0.0);
-  EXPECT_PRED_FORMAT3(relative_close<double>, with.scaled.g, 5.1224e-4, 1e-4);  // ERRATA.md value
+  EXPECT_PRED_FORMAT3(relative_close<double>, with.scaled.g, 5.1224e-4, 1e-4);  // docs/report-notes.md value
   // Forward again through eq. (2) and the solver: the target comes back.
   for (const auto* c : {&with, &without}) {
     physical_parameters<double> p;

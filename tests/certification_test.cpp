@@ -1,7 +1,8 @@
 // viscor::certify: honesty on the exact cases and a small random sample (the big
 // sweeps are in certification_slow_test.cpp), the 45-digit floor at 50 digits on
 // representative points, loud disagreement under a perturbed method, outcome
-// disagreement, and absolute digits near the sticking threshold.
+// disagreement, and absolute digits near the sticking threshold. The perturbation
+// is a test seam (detail::certify_perturbed), not an option of certify.
 #include "certification_test_utils.hpp"
 #include "test_utils.hpp"
 
@@ -26,6 +27,13 @@ TEST(certification, honest_on_exact_cases_at_50_digits) {
 TEST(certification, honest_on_a_random_sample_in_double) {
   for (const auto& p : test::random_sample_points(24, 20240611u)) check_honesty<double>(p);
 }
+
+#if VISCOR_HAS_MPFR
+TEST(certification, honest_on_a_small_random_sample_at_50_digits) {
+  // The first points of the slow test's 60-point sample.
+  for (const auto& p : test::random_sample_points(6, 777u)) check_honesty<mpfr_50>(p);
+}
+#endif
 
 #if VISCOR_HAS_MPFR
 TEST(certification, at_least_45_digits_at_50_for_named_laws) {
@@ -53,10 +61,7 @@ TEST(certification, a_perturbed_method_makes_certification_drop) {
   ASSERT_TRUE(clean.outcome_certified);
   ASSERT_GE(clean.digits, 12);
   for (auto which : {certified_source::taylor, certified_source::taylor_reference, certified_source::adaptive}) {
-    certify_options options;
-    options.perturb = which;
-    options.perturbation = "1e-8";
-    const auto c = certify<double>(kk, 0.05, 1.0, options);
+    const auto c = detail::certify_perturbed<double>(kk, 0.05, 1.0, {}, {which, "1e-8"});
     EXPECT_LE(c.digits, 8) << to_string(which);
     EXPECT_LT(c.digits, clean.digits - 3) << to_string(which);
   }
@@ -64,10 +69,8 @@ TEST(certification, a_perturbed_method_makes_certification_drop) {
 
 #if VISCOR_HAS_MPFR
 TEST(certification, a_perturbed_method_makes_certification_drop_at_50_digits) {
-  certify_options options;
-  options.perturb = certified_source::adaptive;
-  options.perturbation = "1e-30";
-  const auto c = certify<mpfr_50>(law_by_name("tsuji"), mpfr_50("0.05"), mpfr_50(1), options);
+  const auto c = detail::certify_perturbed<mpfr_50>(law_by_name("tsuji"), mpfr_50("0.05"), mpfr_50(1), {},
+                                                    {certified_source::adaptive, "1e-30"});
   EXPECT_TRUE(c.outcome_certified);
   EXPECT_LE(c.digits, 30);
   EXPECT_GE(c.digits, 20);  // the other two still agree: the drop is the perturbation's size
@@ -76,10 +79,7 @@ TEST(certification, a_perturbed_method_makes_certification_drop_at_50_digits) {
 
 TEST(certification, outcome_disagreement_is_uncertified_not_averaged) {
   // Linear law, g = 1: gamma = 0.1 rebounds, gamma = 1.1 sticks; perturb the adaptive run's gamma by 10x.
-  certify_options options;
-  options.perturb = certified_source::adaptive;
-  options.perturbation = "10";
-  const auto c = certify<double>(law_by_name("linear"), 0.1, 1.0, options);
+  const auto c = detail::certify_perturbed<double>(law_by_name("linear"), 0.1, 1.0, {}, {certified_source::adaptive, "10"});
   EXPECT_FALSE(c.outcome_certified);
   EXPECT_EQ(c.digits, 0);
   EXPECT_EQ(c.absolute_digits_e, 0);
@@ -126,7 +126,7 @@ TEST(certification, schwager_poschel_coefficients_from_certified_e) {
   // with (39), (40)). f(gamma) = (1 - e)/gamma from certified 1 - e at gamma = i * 1e-8,
   // i = 1..5; the degree-4 interpolant gives C0 = f(0) and C2 = f'(0) (error ~ 1e-32).
   // Expected values: the closed forms after eq. (40), evaluated independently (the
-  // report's printed c1 = -1.15448854 has two digits swapped, see ERRATA.md).
+  // report's printed c1 = -1.15448854 has two digits swapped, see docs/report-notes.md).
   using R = mpfr_50;
   const R C0("1.730173287142933198695851158"), C2("-1.796099762125789664063");
   const contact_law kk = law_by_name("kuwabara_kono");

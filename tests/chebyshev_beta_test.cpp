@@ -81,7 +81,7 @@ TYPED_TEST(ChebyshevBeta, ClosedFormsAtThetaZeroAndOne) {
 
 TYPED_TEST(ChebyshevBeta, CorrectedRecurrenceGivesTheChebyshevMoments) {
   // a_{j,0} of (105) by direct quadrature of T_j(x - 1) w(x) against the recurrence (53)
-  // with its ERRATA.md correction "- a_{j,k}" (the printed "- a_k", read as a_{0,k}, agrees only up to j = 2).
+  // with its docs/report-notes.md correction "- a_{j,k}" (the printed "- a_k", read as a_{0,k}, agrees only up to j = 2).
   using Real = TypeParam;
   using std::pow;
   using std::expm1;

@@ -55,7 +55,7 @@ TYPED_TEST(Scaling, ReportFigure2bLoadVanishesAtMinusMg) {
 }
 
 TYPED_TEST(Scaling, ReportSteelBeadLoads) {
-  // Sec. 4.1 and ERRATA.md: m = 2.05e-3 kg, alpha = 3/2, gravity 9.8, F = 0.
+  // Sec. 4.1 and docs/report-notes.md: m = 2.05e-3 kg, alpha = 3/2, gravity 9.8, F = 0.
   using Real = TypeParam;
   struct row {
     const char *k, *v0, *g_printed;

@@ -46,8 +46,8 @@ std::vector<std::string> split(const std::string& line) {
 const char* const steel_scene = R"({
   "description": "8 mm steel bead, Kuwabara-Kono, calibrated at 0.246 m/s",
   "law": "kuwabara_kono",
-  "bead": {"mass": 2.05e-3, "stiffness": 6.9716e9},
-  "damping": {"measured_e": 0.893, "speed": 0.246, "gravity": 9.8},
+  "bead": {"m": 2.05e-3, "k": 6.9716e9},
+  "damping": {"measured_e": 0.893, "v0": 0.246, "gravity": 9.8},
   "gravity": 9.8,
   "velocities": [0.05, 0.246, 1],
   "tolerance": 1e-8
@@ -61,7 +61,8 @@ TEST(scene_cli, rows_and_calibration_round_trip) {
   EXPECT_NE(r.out.find("impacts    3 at tolerance 1e-8"), std::string::npos) << r.out;
   const auto rows = lines_of(out);
   ASSERT_EQ(rows.size(), 4u);
-  EXPECT_EQ(rows[0], "index,v0,gamma,g,outcome,sticking,e,one_minus_e,contact_time,error_bound,method,digits,seconds");
+  EXPECT_EQ(rows[0],
+            "index,v0,gamma,g,outcome,sticking,e,one_minus_e,contact_time_s,empirical_bound,method,working_digits,seconds");
   const auto hit = split(rows[2]);  // v0 = 0.246, where e = 0.893 was measured
   ASSERT_EQ(hit.size(), 13u);
   EXPECT_EQ(hit[1], "2.4600000000000000e-01");
@@ -99,7 +100,7 @@ TEST(scene_cli, bad_scenes_name_the_field_and_write_nothing) {
   };
   const std::vector<bad> cases{
       {"missing tolerance", with(",\n  \"tolerance\": 1e-8", ""), "field tolerance: missing"},
-      {"negative mass", with("\"mass\": 2.05e-3", "\"mass\": -2.05e-3"), ":4: parameter bead.mass must be > 0"},
+      {"negative mass", with("\"m\": 2.05e-3", "\"m\": -2.05e-3"), ":4: parameter bead.m must be > 0"},
       {"unknown law", with("\"kuwabara_kono\"", "\"kuwabara\""), ":3: field law: unknown contact law 'kuwabara'"},
       {"zero tolerance", with("\"tolerance\": 1e-8", "\"tolerance\": 0"), ":8: parameter tolerance must be > 0"},
       {"negative tolerance", with("\"tolerance\": 1e-8", "\"tolerance\": -1e-3"), "tolerance must be > 0"},
@@ -108,8 +109,9 @@ TEST(scene_cli, bad_scenes_name_the_field_and_write_nothing) {
       {"zero target", with("\"measured_e\": 0.893", "\"measured_e\": 0"), "threshold"},
       {"missing gravity of the measurement", with(", \"gravity\": 9.8}", "}"), "field damping.gravity: missing"},
       {"misspelt field", with("\"gravity\": 9.8,\n", "\"gravty\": 9.8,\n"), ":6: field gravty: unknown field"},
-      {"missing bead", with("\"bead\": {\"mass\": 2.05e-3, \"stiffness\": 6.9716e9},", ""), "missing field bead"},
-      {"bad number", with("\"stiffness\": 6.9716e9", "\"stiffness\": \"lots\""), ":4: field bead.stiffness: must be a finite decimal number, got 'lots'"},
+      {"missing bead", with("\"bead\": {\"m\": 2.05e-3, \"k\": 6.9716e9},", ""), "missing field bead"},
+      {"bad number", with("\"k\": 6.9716e9", "\"k\": \"lots\""), ":4: field bead.k: must be a finite decimal number, got 'lots'"},
+      {"missing gravity", with("\"gravity\": 9.8,\n", ""), "field gravity: missing"},
       {"negative speed", with("[0.05, 0.246, 1]", "[0.05, -0.246, 1]"), ":7: parameter velocities[1] must be > 0"},
       {"not JSON", "{\"law\": \"linear\",\n \"bead\": }", "invalid JSON at line 2"},
   };
@@ -152,7 +154,7 @@ TEST(scene_cli, errormap_feeds_a_scene) {
   // Soft bead, slow impacts: gamma ~ 0.005-0.015, g ~ 0.01: inside the map.
   const std::string scene = write_file("soft.json", R"({
     "law": "hunt_crossley",
-    "bead": {"mass": 1e-3, "stiffness": 1e6},
+    "bead": {"m": 1e-3, "k": 1e6},
     "damping": {"gamma0": 1e-2},
     "gravity": 0.5,
     "velocities": {"from": 0.2, "to": 0.5, "count": 50, "spacing": "linear"},
@@ -183,7 +185,7 @@ TEST(scene_cli, readme_example_scene_keeps_its_bounds) {
   int checked = 0;
   for (std::size_t i = 1; i < lines.size(); ++i) {
     const auto f = split(lines[i]);
-    const double bound = std::stod(f[col("error_bound")]);
+    const double bound = std::stod(f[col("empirical_bound")]);
     ASSERT_LE(bound, 1e-4) << lines[i];
     if (i % 250 != 1) continue;
     with_working_precision(30, [&]<class Real>() {

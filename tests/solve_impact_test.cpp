@@ -160,7 +160,7 @@ TYPED_TEST(SolveImpactExact, SmallDampingSlope) {
 }
 
 TEST(SolveImpact, KuwabaraKonoSlopeMatchesIndependentConstant) {
-  // C0 for alpha = beta = 3/2, computed independently (ERRATA.md, NUMERICS-NOTES.md).
+  // C0 for alpha = beta = 3/2, computed independently (docs/report-notes.md).
   const mpfr_50 c0("1.730173287142933198695851158");
   const contact_law law = law_by_name("kuwabara_kono");
   EXPECT_PRED_FORMAT3(relative_close<mpfr_50>, c0_closed_form<mpfr_50>(law), c0, mpfr_50("1e-27"));

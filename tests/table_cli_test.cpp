@@ -126,7 +126,7 @@ TEST_F(TableCli, InterruptAndResumeGiveTheSameBytes) {
 
   // The test hook raises SIGINT after 7 rows: the run stops non-zero and keeps them.
   setenv("VISCOR_TABLE_STOP_AFTER", "7", 1);
-  auto r = run_cli("table " + spec + " -o " + path("out.csv") + " --threads 1");
+  auto r = run_cli("table " + spec + " -o " + path("out.csv") + " --threads 1", VISCOR_CLI_TEST_HOOKS_PATH);
   unsetenv("VISCOR_TABLE_STOP_AFTER");
   EXPECT_NE(r.status, 0);
   EXPECT_NE(r.err.find("interrupted"), std::string::npos) << r.err;
@@ -142,7 +142,7 @@ TEST_F(TableCli, InterruptAndResumeGiveTheSameBytes) {
 
   // A second interruption, then a row cut short by a kill inside write().
   setenv("VISCOR_TABLE_STOP_AFTER", "5", 1);
-  r = run_cli("table " + spec + " -o " + path("out.csv") + " --resume --threads 2");
+  r = run_cli("table " + spec + " -o " + path("out.csv") + " --resume --threads 2", VISCOR_CLI_TEST_HOOKS_PATH);
   unsetenv("VISCOR_TABLE_STOP_AFTER");
   EXPECT_NE(r.status, 0);
   std::ofstream(path("out.csv.partial"), std::ios::app) << "29,linear,1,1,2.5,10,reb";
@@ -163,10 +163,21 @@ TEST_F(TableCli, InterruptAndResumeGiveTheSameBytes) {
   EXPECT_EQ(fs::last_write_time(path("out.csv")), before);
 }
 
+TEST_F(TableCli, TheReleasedBinaryHasNoInterruptHook) {
+  // VISCOR_TABLE_STOP_AFTER is a test seam of viscor_test_hooks only (src/cli/test_hooks.hpp).
+  const std::string spec = write("spec.json", linear_spec);
+  setenv("VISCOR_TABLE_STOP_AFTER", "3", 1);
+  const auto r = run_cli("table " + spec + " -o " + path("out.csv") + " --threads 1 --quiet");
+  unsetenv("VISCOR_TABLE_STOP_AFTER");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(fs::exists(path("out.csv")));
+  EXPECT_FALSE(fs::exists(path("out.csv.partial")));
+}
+
 TEST_F(TableCli, ResumeRefusesAnotherSpec) {
   const std::string spec = write("spec.json", linear_spec);
   setenv("VISCOR_TABLE_STOP_AFTER", "3", 1);
-  EXPECT_NE(run_cli("table " + spec + " -o " + path("out.csv") + " --threads 1 --quiet").status, 0);
+  EXPECT_NE(run_cli("table " + spec + " -o " + path("out.csv") + " --threads 1 --quiet", VISCOR_CLI_TEST_HOOKS_PATH).status, 0);
   unsetenv("VISCOR_TABLE_STOP_AFTER");
   const std::string other = write("other.json", linear_only_spec);
   const auto r = run_cli("table " + other + " -o " + path("out.csv") + " --resume");

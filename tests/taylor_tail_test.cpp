@@ -11,35 +11,18 @@
 #include "test_utils.hpp"
 
 #include <numeric>
+#include <string>
+#include <tuple>
 #include <vector>
 
 namespace viscor {
 namespace {
 
 #if VISCOR_HAS_FLOAT128 && VISCOR_HAS_MPFR
+// The solver's constants (one place: detail::make_impact_constants).
 template <class Real>
 detail::impact_constants<Real> constants(const contact_law& law, const char* gamma, const char* g) {
-  detail::impact_constants<Real> c;
-  c.alpha = law.alpha.value<Real>();
-  c.beta = law.beta.value<Real>();
-  c.gamma = parse_real<Real>(gamma, "gamma");
-  c.g = parse_real<Real>(g, "g");
-  c.alpha_plus_one = c.alpha + 1;
-  c.beta_plus_one = c.beta + 1;
-  c.gamma_beta = c.gamma * c.beta;
-  c.two_gamma = 2 * c.gamma;
-  c.two_gamma_beta = 2 * c.gamma_beta;
-  c.alpha_equals_beta = law.alpha == law.beta;
-  c.alpha_is_one = law.alpha.is_rational() && law.alpha.numerator() == 1 && law.alpha.denominator() == 1;
-  c.beta_is_one = law.beta.is_rational() && law.beta.numerator() == 1 && law.beta.denominator() == 1;
-  if (law.alpha.is_rational() && law.beta.is_rational()) {  // u = s^Q, as taylor_impact.hpp
-    const long q = std::lcm(law.alpha.denominator(), law.beta.denominator());
-    c.use_root_variable = true;
-    c.Q = q;
-    c.Q_alpha = q / law.alpha.denominator() * law.alpha.numerator();
-    c.Q_beta = q / law.beta.denominator() * law.beta.numerator();
-  }
-  return c;
+  return detail::make_impact_constants(law, parse_real<Real>(gamma, "gamma"), parse_real<Real>(g, "g"));
 }
 
 // What the orders from tail_start on change in the step polynomial at h: the
@@ -132,6 +115,78 @@ TEST(TaylorTail, EndpointJetWithinTheToleranceOfTheFullPrecisionJetAtTheStepTake
     }
   }
   EXPECT_GT(tails, 50);
+}
+
+// Issue 18: constants outside double's normal range (gamma = 1e-320 is subnormal in
+// double, 1e-400 is 0 there; g likewise) must switch the tail off, since D's orders
+// are proportional to gamma and are wanted relative to D itself.
+TEST(TaylorTail, ConstantsOutsideDoublesNormalRangeSwitchTheTailOff) {
+  const quad tol = epsilon<quad>();
+  const mpfr_50 tol_m = mpfr_50(tol);
+  const contact_law law = law_by_name("kuwabara_kono");
+  for (auto [gamma, g, D] : {std::tuple{"1e-320", "1", "1e-321"}, {"1e-400", "1", "1e-401"},
+                             {"1e-310", "0.5", "1e-311"}, {"0.05", "1e-320", "1e-3"}}) {
+    SCOPED_TRACE(std::string("gamma = ") + gamma + ", g = " + g);
+    const auto cq = constants<quad>(law, gamma, g);
+    const auto cm = constants<mpfr_50>(law, gamma, g);
+    {
+      detail::time_system<quad> sq(cq, taylor_order(tol), tol);
+      detail::time_system<mpfr_50> sm(cm, taylor_order(tol_m), tol_m);
+      taylor_integrator<quad, detail::time_system<quad>> iq(sq, tol);
+      taylor_integrator<mpfr_50, detail::time_system<mpfr_50>> im(sm, tol_m);
+      const std::vector<quad> x{quad("0.3"), quad("0.9"), parse_real<quad>(D, "D")};
+      const quad h = iq.expand(quad(0), x, quad(1e30));
+      im.expand(mpfr_50(0), {mpfr_50(x[0]), mpfr_50(x[1]), mpfr_50(x[2])}, mpfr_50(1e30));
+      EXPECT_GT(sq.tail_start(), iq.order()) << "time jet: the tail ran";
+      for (std::size_t i = 0; i < 3; ++i)
+        EXPECT_LE(tail_difference(iq.jet(), im, i, sq.tail_start(), h),
+                  tol_m * mpfr_50(sq.step_scale(i, x[i])) / 4)
+            << "time jet, component " << i;
+    }
+    {
+      detail::endpoint_system<quad> sq(cq, taylor_order(tol), tol);
+      detail::endpoint_system<mpfr_50> sm(cm, taylor_order(tol_m), tol_m);
+      taylor_integrator<quad, detail::endpoint_system<quad>> iq(sq, tol);
+      taylor_integrator<mpfr_50, detail::endpoint_system<mpfr_50>> im(sm, tol_m);
+      const std::vector<quad> x{quad("0.8"), quad("0.1"), parse_real<quad>(D, "D")};
+      const quad h = iq.expand(quad("0.3"), x, quad(1e30));
+      im.expand(mpfr_50("0.3"), {mpfr_50(x[0]), mpfr_50(x[1]), mpfr_50(x[2])}, mpfr_50(1e30));
+      if (std::string(g) != "1e-320") EXPECT_GT(sq.tail_start(), iq.order()) << "endpoint jet: the tail ran";
+      for (std::size_t i = 0; i < 3; ++i)
+        EXPECT_LE(tail_difference(iq.jet(), im, i, sq.tail_start(), h),
+                  tol_m * mpfr_50(sq.step_scale(i, x[i])) / 4)
+            << "endpoint jet, component " << i;
+    }
+  }
+}
+
+// Issue 18: at the start of contact tau = D = 0, so the step cap, which measures a
+// state relative to its value, cannot see what the tail does to them: the orders
+// computed in double must then change tau(h) and D(h) by less than a quarter of the
+// tolerance relative to those values (or the tail must be off).
+TEST(TaylorTail, StatesThatAreZeroAtTheExpansionPointKeepTheirDigits) {
+  const quad tol = epsilon<quad>();
+  const mpfr_50 tol_m = mpfr_50(tol);
+  for (const char* name : {"hertz_linear_damping", "tsuji", "kuwabara_kono", "hunt_crossley"}) {
+    const contact_law law = law_by_name(name);
+    for (auto [gamma, g] : {std::pair{"0.05", "1"}, {"1e-3", "0.05"}, {"0.5", "0"}, {"1e-4", "10"}}) {
+      SCOPED_TRACE(std::string(name) + " gamma = " + gamma + " g = " + g);
+      const auto cq = constants<quad>(law, gamma, g);
+      const auto cm = constants<mpfr_50>(law, gamma, g);
+      detail::endpoint_system<quad> sq(cq, taylor_order(tol), tol);
+      detail::endpoint_system<mpfr_50> sm(cm, taylor_order(tol_m), tol_m);
+      taylor_integrator<quad, detail::endpoint_system<quad>> iq(sq, tol);
+      taylor_integrator<mpfr_50, detail::endpoint_system<mpfr_50>> im(sm, tol_m);
+      const std::vector<quad> x{quad(1), quad(0), quad(0)};  // v = 1, tau = 0, D = 0 at s = 0
+      const quad h = iq.expand(quad(0), x, quad(1e30));
+      im.expand(mpfr_50(0), {mpfr_50(1), mpfr_50(0), mpfr_50(0)}, mpfr_50(1e30));
+      for (std::size_t i : {std::size_t(1), std::size_t(2)}) {
+        const mpfr_50 value = abs(im.value(i, mpfr_50(h)));
+        EXPECT_LE(tail_difference(iq.jet(), im, i, std::min(sq.tail_start(), iq.order() + 1), h), tol_m * value / 4)
+            << "component " << i << ", tail from order " << sq.tail_start() << " of " << iq.order();
+      }
+    }
+  }
 }
 #endif
 

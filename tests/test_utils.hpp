@@ -105,12 +105,14 @@ struct cli_run {
 };
 
 /// Runs `viscor ARGS` (VISCOR_CLI_PATH, set by CMake) and captures its output.
-inline cli_run run_cli(const std::string& args) {
+/// Runs the viscor binary (by default the released one; VISCOR_CLI_TEST_HOOKS_PATH
+/// for the test binary whose test seams are enabled, src/cli/test_hooks.hpp).
+inline cli_run run_cli(const std::string& args, const std::string& program = VISCOR_CLI_PATH) {
   // NOTE: ctest -j runs test processes side by side: name the capture files per process.
   static int calls = 0;
   const std::string stem = ::testing::TempDir() + "viscor_cli_" + std::to_string(::getpid()) + "_" + std::to_string(++calls);
   const std::string out = stem + ".out", err = stem + ".err";
-  const std::string command = std::string(VISCOR_CLI_PATH) + " " + args + " > " + out + " 2> " + err;
+  const std::string command = program + " " + args + " > " + out + " 2> " + err;
   cli_run r;
   const int raw = std::system(command.c_str());
   r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;

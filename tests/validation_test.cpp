@@ -104,9 +104,9 @@ TEST(Validation, CliRejectsBadInputAndWritesNothing) {
       {"exact --model linear --gamma 0.1 --digits 0", "digits = 0"},
       {"exact --model linear --gamma 0.1 --digits 1000000", "digits = 1000000"},
       {"exact --model newton --gamma 0.1", "unknown contact law 'newton'"},
-      {"scale --model kuwabara_kono --m -1 --k 1e9 --v0 1 --gamma0 0", "parameter m"},
-      {"scale --model kuwabara_kono --m 1 --k 0 --v0 1 --gamma0 0", "parameter k"},
-      {"scale --model kuwabara_kono --m 1 --k 1e9 --v0 -3 --gamma0 0", "parameter v0"},
+      {"scale --model kuwabara_kono --m -1 --k 1e9 --v0 1 --gamma0 0 --gravity 9.8", "parameter m"},
+      {"scale --model kuwabara_kono --m 1 --k 0 --v0 1 --gamma0 0 --gravity 9.8", "parameter k"},
+      {"scale --model kuwabara_kono --m 1 --k 1e9 --v0 -3 --gamma0 0 --gravity 9.8", "parameter v0"},
   };
   const std::string path = ::testing::TempDir() + "viscor_validation_output.json";
   for (const auto& c : cases) {

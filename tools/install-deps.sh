@@ -13,6 +13,8 @@ packages=(
   libcli11-dev              # command line
   nlohmann-json3-dev        # JSON output and sidecars
   python3-matplotlib        # tools/plot_reference.py figures
+  lammps liggghts           # DEM programs run by tests/dem_drop_*test.cpp (issue 15)
+  doxygen                   # API reference: cmake --build build --target doc (issue 13)
 )
 
 missing=()

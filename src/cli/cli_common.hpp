@@ -22,6 +22,15 @@ namespace viscor::cli {
 
 using json = nlohmann::ordered_json;
 
+inline bool ends_with(const std::string& text, const std::string& tail) {
+  return text.size() >= tail.size() && text.compare(text.size() - tail.size(), tail.size(), tail) == 0;
+}
+
+/// An old spelling that still works (until 1.0): one line on stderr naming the new one.
+inline void deprecation_warning(const std::string& old_spelling, const std::string& new_spelling) {
+  std::cerr << "viscor: warning: " << old_spelling << " is deprecated; use " << new_spelling << "\n";
+}
+
 /// --model NAME | --alpha A --beta B (exponents accept fractions: --alpha 3/2).
 struct law_options {
   std::string model, alpha, beta;
@@ -55,8 +64,11 @@ struct output_options {
     app.add_option("-o,--output", path, "write the output to FILE instead of standard output");
   }
 
+  /// JSON when asked with --json or when the output file ends in .json.
+  bool as_json() const { return json || ends_with(path, ".json"); }
+
   void emit(const std::string& text, const cli::json& object) const {
-    const std::string body = json ? object.dump(2) + "\n" : text;
+    const std::string body = as_json() ? object.dump(2) + "\n" : text;
     if (path.empty()) {
       std::cout << body << std::flush;
       return;

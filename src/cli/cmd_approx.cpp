@@ -5,6 +5,7 @@
 // Chebyshev-Beta approximation.
 #include "cli_common.hpp"
 #include "command_registry.hpp"
+#include "surrogate_files.hpp"
 
 #include <viscor/approx/approximations.hpp>
 
@@ -16,8 +17,8 @@
 namespace viscor::cli {
 namespace {
 
-constexpr std::array<const char*, 7> formula_names{"all",   "small_g",       "large_g",         "schwager_poschel",
-                                                   "prop2", "prop2_squared", "prop2_linearized"};
+constexpr std::array<const char*, 8> formula_names{"all",   "small_g",       "large_g",         "schwager_poschel",
+                                                   "prop2", "prop2_squared", "prop2_linearized", "surrogate"};
 
 struct approx_command {
   law_options law;
@@ -27,14 +28,51 @@ struct approx_command {
 
   bool wants(const char* name) const { return formula == "all" || formula == name; }
 
+  // --formula surrogate: the committed surrogate in double (docs/surrogate.md); never silently
+  // outside its domain or for a law without one.
+  void run_surrogate(const contact_law& model) const {
+    const surrogate::cor_surrogate* s = find_surrogate(model);
+    if (!s)
+      throw invalid_parameter("no surrogate for " + model.describe() + " (looked in '" + surrogate_directory() +
+                              "'; build one with 'viscor surrogate build', docs/surrogate.md)");
+    const double gamma_value = parse_real<double>(gamma, "gamma"), g_value = parse_real<double>(g, "g");
+    const surrogate::surrogate_value v = (*s)(gamma_value, g_value);
+    if (!v.in_domain) {
+      std::ostringstream domain;
+      domain << "0 <= gamma <= " << s->gamma_max << ", " << s->g_min << " <= g <= " << s->g_max;
+      throw invalid_parameter("gamma = " + gamma + ", g = " + g + " is outside the domain of the " + model.name +
+                              " surrogate (" + domain.str() + ")");
+    }
+    json j;
+    j["command"] = "approx";
+    j["formula"] = "surrogate";
+    j["law"] = law_json(model);
+    j["gamma"] = gamma, j["g"] = g;
+    j["e"] = number(v.e);
+    j["one_minus_e"] = number(v.one_minus_e);
+    j["outcome"] = std::string(to_string(v.outcome));
+    j["error_bound"] = surrogate_bound_json(*s);
+    std::ostringstream text;
+    text << "law          " << model.describe() << "\n"
+         << "surrogate    e = " << number(v.e) << ", 1 - e = " << number(v.one_minus_e) << " (" << to_string(v.outcome)
+         << ")\n"
+         << (s->bound.verified() ? "" : "error bound  none: this surrogate file was never verified\n");
+    if (s->bound.verified())
+      text << "error bound  |de| <= " << s->bound.abs_e << " (e >= 1e-2), |de^2| <= " << s->bound.abs_e_squared
+         << ", relative d(1 - e) <= " << s->bound.rel_one_minus_e << " (gamma <= 1e-2)\n"
+         << "             (measured maximum over the certified verification points x " << s->bound.safety_factor << ")\n";
+    output.emit(text.str(), j);
+  }
+
   void run() const {
     const contact_law model = law.resolve();
     if (gamma.empty()) throw invalid_parameter("approx needs --gamma");
+    if (formula == "surrogate") return run_surrogate(model);
     bool known = false;
     for (const char* f : formula_names) known = known || formula == f;
     if (!known)
       throw invalid_parameter("parameter formula must be one of all, small_g, large_g, schwager_poschel, prop2, "
-                              "prop2_squared, prop2_linearized; got '" + formula + "'");
+                              "prop2_squared, prop2_linearized, surrogate; got '" + formula + "'");
     std::vector<coefficient_source> sources;
     if (source == "all") {
       sources.assign(coefficient_sources.begin(), coefficient_sources.end());
@@ -154,11 +192,13 @@ void setup(CLI::App& app) {
   app.add_option("--gamma", cmd->gamma, "scaled damping gamma >= 0")->required();
   app.add_option("--g", cmd->g, "scaled load g")->capture_default_str();
   app.add_option("--formula", cmd->formula,
-                 "all, small_g, large_g, schwager_poschel, prop2, prop2_squared or prop2_linearized")
+                 "all, small_g, large_g, schwager_poschel, prop2, prop2_squared, prop2_linearized, or surrogate (double; docs/surrogate.md)")
       ->capture_default_str();
   app.add_option("--source", cmd->source, "Prop. 2 coefficients: all, exact_at_zero, numeric or chebyshev_beta")
       ->capture_default_str();
-  app.add_option("--order", cmd->order, "odd order n of the Chebyshev-Beta approximation")->capture_default_str();
+  app.add_option("--order", cmd->order, "odd order n of the Chebyshev-Beta approximation, 1 to 999")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 999));
   app.add_option("--digits", cmd->digits, "working precision in decimal digits")->capture_default_str();
   app.callback([cmd] { cmd->run(); });
 }

@@ -12,6 +12,7 @@
 // Relative errors are over the rebounding points (e > 0) only.
 #include "cli_common.hpp"
 #include "command_registry.hpp"
+#include "data_directory.hpp"
 
 #include <viscor/scenes/error_map.hpp>
 #include <viscor/scenes/evaluate.hpp>
@@ -111,7 +112,7 @@ struct bench_command {
   std::string laws = "linear,hertz_linear_damping,tsuji,kuwabara_kono,hunt_crossley";
   std::string precisions = "30,50,100,200";
   std::string maps;
-  std::string table = "reference_data/cor_report_grid.csv";
+  std::string table;  // "" -> <data directory>/cor_report_grid.csv
   bool certified = false;
   double min_time = 0.02;
 
@@ -214,8 +215,10 @@ struct bench_command {
     const std::vector<int> digits = digit_list();
     const int ref_digits = (digits.empty() ? 40 : *std::max_element(digits.begin(), digits.end())) + 20;
 
-    const csv_table reference_table = read_table(table);
-    if (reference_table.kind != table_kind::cor) throw invalid_parameter("--table " + table + " is not a CoR table");
+    const std::string table_path =
+        table.empty() ? (std::filesystem::path(data_directory()) / "cor_report_grid.csv").string() : table;
+    const csv_table reference_table = read_table(table_path);
+    if (reference_table.kind != table_kind::cor) throw invalid_parameter("--table " + table_path + " is not a CoR table");
     const auto start = clock_type::now();
     std::vector<bench_point> points;
     int least_table_digits = 1000000;
@@ -223,7 +226,7 @@ struct bench_command {
       for (const char* gamma : {"0.001", "0.01", "0.1"})
         for (const char* g : {"0", "0.05", "1"}) {
           bench_point p{law, gamma, g, "", 0, ""};
-          std::tie(p.e_table, p.table_digits) = table_value(reference_table, table, law, gamma, g);
+          std::tie(p.e_table, p.table_digits) = table_value(reference_table, table_path, law, gamma, g);
           least_table_digits = std::min(least_table_digits, p.table_digits);
           p.e_ref = with_working_precision(ref_digits, [&]<class Real>() {
             const prepared r = taylor_at<Real>(p);
@@ -237,7 +240,7 @@ struct bench_command {
             if (!(abs(extended - certified) <= allowed))
               throw certification_error("bench: solve_impact at " + std::to_string(ref_digits) + " digits gives e = " + e +
                                         " at " + law.describe() + ", gamma = " + gamma + ", g = " + g +
-                                        ", outside the certified " + p.e_table + " of " + table);
+                                        ", outside the certified " + p.e_table + " of " + table_path);
             return e;
           });
           points.push_back(p);
@@ -289,7 +292,7 @@ struct bench_command {
     json j;
     j["command"] = "bench";
     j["laws"] = laws;
-    const std::string reference_text = "certified table " + table + " (>= " + std::to_string(least_table_digits) +
+    const std::string reference_text = "certified table " + table_path + " (>= " + std::to_string(least_table_digits) +
                                        " digits), extended by solve_impact at " + std::to_string(ref_digits) +
                                        " digits, which agrees with it to every certified digit";
     j["reference"] = reference_text;
@@ -301,7 +304,7 @@ struct bench_command {
       text << "| " << r.name << " | " << r.precision << " | " << (r.points ? buffer : "-") << " | " << r.max_abs
            << " | " << r.median_abs << " | " << r.max_rel << " | " << r.median_rel << " | " << r.points << " |\n";
       json o;
-      o["method"] = r.name, o["precision"] = r.precision, o["median_seconds"] = r.median_seconds;
+      o["method"] = r.name, o["scalar"] = r.precision, o["median_seconds"] = r.median_seconds;
       o["max_abs_error"] = r.max_abs, o["median_abs_error"] = r.median_abs;
       o["max_rel_error"] = r.max_rel, o["median_rel_error"] = r.median_rel, o["points"] = r.points;
       rows_json.push_back(o);
@@ -321,8 +324,8 @@ void setup(CLI::App& app) {
       ->capture_default_str();
   app.add_flag("--certified", cmd->certified, "also benchmark certify (double and each MPFR precision)");
   app.add_option("--error-maps", cmd->maps, "directory of error maps for the evaluate rows");
-  app.add_option("--table", cmd->table, "certified CoR table holding the point set (reference values)")
-      ->capture_default_str();
+  app.add_option("--table", cmd->table,
+                 "certified CoR table holding the point set (default: cor_report_grid.csv of the data directory)");
   app.add_option("--min-time", cmd->min_time, "seconds of repetitions per point and method")->capture_default_str();
   app.callback([cmd] { cmd->run(); });
 }

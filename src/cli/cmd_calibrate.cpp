@@ -1,7 +1,8 @@
 // viscor calibrate: the damping that gives a target CoR (calibration.hpp), scaled
-// (--g) or physical (--m, --k, --v0, --gravity[, --F] -> gamma0 by eq. 2).
+// (--g) or physical (--m, --k, --v0, --gravity[, --force] -> gamma0 by eq. 2).
 #include "cli_common.hpp"
 #include "command_registry.hpp"
+#include "physical_options.hpp"
 
 #include <viscor/scenes/calibration.hpp>
 
@@ -14,50 +15,46 @@ namespace {
 struct calibrate_command {
   law_options law;
   output_options output;
-  std::string target_e, g, m, k, v0, gravity, force = "0", tolerance = "0", gamma_max = "100";
+  physical_options physical;
+  std::optional<std::string> target_e, g;
+  std::string tolerance = "0", gamma_max = "100";
   int digits = 15;
 
-  void run() const {
+  void run() {
     const contact_law model = law.resolve();
-    if (target_e.empty()) throw invalid_parameter("calibrate needs --target-e, the CoR to reproduce");
-    const bool physical = !m.empty() || !k.empty() || !v0.empty() || !gravity.empty();
-    if (physical && !g.empty())
-      throw invalid_parameter("give either --g (scaled) or --m/--k/--v0/--gravity (physical), not both");
-    if (physical && (m.empty() || k.empty() || v0.empty()))
-      throw invalid_parameter("physical calibration needs --m, --k and --v0");
-    if (physical && gravity.empty())
-      throw invalid_parameter("physical calibration needs --gravity (m/s^2 towards the wall; 0 for none): "
-                              "the load changes the calibrated damping");
+    if (!target_e) throw invalid_parameter("calibrate needs --target-e, the CoR to reproduce");
+    const bool is_physical = physical.given();
+    if (is_physical && g)
+      throw invalid_parameter("give either --g (scaled) or the physical inputs (" + physical.given_names() +
+                              "), not both");
+    if (is_physical) physical.check("calibrate");
     with_working_precision(digits, [&]<class Real>() {
       calibration_options<Real> options;
       options.tolerance = parse_real<Real>(tolerance, "tolerance");
       options.gamma_max = parse_real<Real>(gamma_max, "gamma_max");
-      const Real target = parse_real<Real>(target_e, "target_e");
+      const Real target = parse_real<Real>(*target_e, "target_e");
       json j;
       j["command"] = "calibrate";
       j["law"] = law_json(model);
-      j["target_e"] = target_e;
+      j["target_e"] = *target_e;
       std::ostringstream text;
       text << "law        " << model.describe() << "\n"
-           << "target e   " << target_e << "\n";
+           << "target e   " << *target_e << "\n";
       const auto start = std::chrono::steady_clock::now();
       calibration_result<Real> r;
-      if (physical) {
-        const Real mass = parse_real<Real>(m, "m"), stiffness = parse_real<Real>(k, "k");
-        const Real speed = parse_real<Real>(v0, "v0"), grav = parse_real<Real>(gravity, "gravity");
-        const Real f = parse_real<Real>(force, "F");
-        const physical_calibration<Real> p = calibrate_gamma0(model, mass, stiffness, speed, grav, f, target, options);
+      if (is_physical) {
+        const physical_parameters<Real> in = physical.parameters<Real>(model);
+        const physical_calibration<Real> p =
+            calibrate_gamma0(model, in.m, in.k, in.v0, in.gravity, in.force, target, options);
         r = p.scaled;
-        json phys;
-        phys["m"] = m, phys["k"] = k, phys["v0"] = v0, phys["gravity"] = gravity, phys["F"] = force;
-        j["physical"] = phys;
+        j["physical"] = physical.echo();
         j["gamma0"] = number(p.gamma0);
-        j["time_scale"] = number(p.time_scale);
-        text << "bead       m = " << m << " kg, k = " << k << ", v0 = " << v0 << " m/s, gravity = " << gravity
-             << " m/s^2, F = " << force << " N\n"
+        j["time_scale_s"] = number(p.time_scale);
+        text << "bead       m = " << number(in.m) << " kg, k = " << number(in.k) << ", v0 = " << number(in.v0)
+             << " m/s, gravity = " << number(in.gravity) << " m/s^2, force = " << number(in.force) << " N\n"
              << "gamma0     " << number(p.gamma0) << "\n";
       } else {
-        r = calibrate_gamma(model, g.empty() ? Real(0) : parse_real<Real>(g, "g"), target, options);
+        r = calibrate_gamma(model, g ? parse_real<Real>(*g, "g") : Real(0), target, options);
       }
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       j["gamma"] = number(r.gamma);
@@ -74,7 +71,7 @@ struct calibrate_command {
            << "e          " << number(r.e) << " at gamma (solve_impact)\n"
            << "|e - tgt|  <= " << to_decimal_string(r.e_error, 3) << " (miss plus 10 x the solver's estimate)\n"
            << "solves     " << r.solves << "\n"
-           << "time       " << seconds << " s\n"
+           << "seconds    " << seconds << " s\n"
            << "digits     " << decimal_digits<Real>() << " (working precision)\n";
       output.emit(text.str(), j);
     });
@@ -87,11 +84,7 @@ void setup(CLI::App& app) {
   cmd->output.add_to(app);
   app.add_option("--target-e", cmd->target_e, "the CoR to reproduce, 0 < e <= 1");
   app.add_option("--g", cmd->g, "scaled load (scaled calibration; default 0)");
-  app.add_option("--m", cmd->m, "mass, kg (physical calibration)");
-  app.add_option("--k", cmd->k, "contact stiffness, N/m^alpha (physical calibration)");
-  app.add_option("--v0", cmd->v0, "impact speed, m/s (physical calibration)");
-  app.add_option("--gravity", cmd->gravity, "gravitational acceleration towards the wall, m/s^2 (physical; required)");
-  app.add_option("--F", cmd->force, "external force, N (> 0 presses on the wall)")->capture_default_str();
+  cmd->physical.add_to(app, /*with_gamma0=*/false);
   app.add_option("--tolerance", cmd->tolerance, "absolute tolerance on e (0: 1e5 x machine epsilon)")
       ->capture_default_str();
   app.add_option("--gamma-max", cmd->gamma_max, "largest scaled damping tried")->capture_default_str();

@@ -1,10 +1,12 @@
 // viscor cor: the coefficient of restitution of one impact, integrated to the
 // working precision (solve_impact, Taylor method by default). Parameters are
-// scaled (--gamma, --g) or physical (--physical m=..,k=..,gamma0=..,v0=..,gravity=..,F=..,
-// converted by eq. (2)).
+// scaled (--gamma, --g) or physical (--m --k --gamma0 --v0 --gravity [--force],
+// converted by eq. (2)); or many points from a file (--points, cor_points.hpp).
 #include "certify_output.hpp"
 #include "cli_common.hpp"
 #include "command_registry.hpp"
+#include "cor_points.hpp"
+#include "physical_options.hpp"
 
 #include <viscor/core/scaling.hpp>
 #include <viscor/impact/solve_impact.hpp>
@@ -16,51 +18,57 @@
 namespace viscor::cli {
 namespace {
 
-// "m=2.05e-3,k=6.97e9,gamma0=0,v0=0.246,gravity=9.8,F=0" -> key/value texts.
-std::map<std::string, std::string> parse_assignments(const std::string& text) {
-  static const char* const keys[] = {"m", "k", "gamma0", "v0", "gravity", "F"};
-  std::map<std::string, std::string> out;
+// The spelling before 0.2.0: "--physical m=2.05e-3,k=6.97e9,gamma0=0,v0=0.246,gravity=9.8,F=0".
+// Still read, with a warning; its keys go to the same options as --m, --k, ...
+void read_deprecated_physical(const std::string& text, physical_options& p) {
+  deprecation_warning("--physical m=..,k=..", "--m .. --k .. --gamma0 .. --v0 .. --gravity .. [--force ..]");
   std::stringstream in(text);
   std::string item;
   while (std::getline(in, item, ',')) {
     const auto eq = item.find('=');
     if (eq == std::string::npos)
       throw invalid_parameter("--physical expects key=value pairs separated by commas, got '" + item + "'");
-    const std::string key = item.substr(0, eq);
-    bool known = false;
-    for (const char* k : keys) known = known || key == k;
-    if (!known)
-      throw invalid_parameter("--physical: unknown key '" + key + "' (known: m, k, gamma0, v0, gravity, F)");
-    if (out.count(key)) throw invalid_parameter("--physical: key '" + key + "' given twice");
-    out[key] = item.substr(eq + 1);
+    const std::string key = item.substr(0, eq), value = item.substr(eq + 1);
+    std::optional<std::string>* slot = key == "m"        ? &p.m
+                                       : key == "k"      ? &p.k
+                                       : key == "gamma0" ? &p.gamma0
+                                       : key == "v0"     ? &p.v0
+                                       : key == "gravity" ? &p.gravity
+                                       : key == "F" || key == "force" ? &p.force
+                                                                      : nullptr;
+    if (!slot) throw invalid_parameter("--physical: unknown key '" + key + "' (known: m, k, gamma0, v0, gravity, force)");
+    if (*slot) throw invalid_parameter("--physical: key '" + key + "' given twice (or also as --" + key + ")");
+    *slot = value;
   }
-  for (const char* k : {"m", "k", "gamma0", "v0"})
-    if (!out.count(k)) throw invalid_parameter(std::string("--physical: missing ") + k + "=...");
-  return out;
 }
 
 struct cor_command {
   law_options law;
   output_options output;
-  std::string gamma, g, physical, method = "taylor", tolerance = "0";
+  physical_options physical;
+  std::optional<std::string> gamma, g, deprecated_physical, points;
+  std::string method = "taylor", tolerance = "0";
   int digits = 15;
+  unsigned threads = 1;
   std::size_t max_steps = solve_options<double>{}.max_steps;
   bool certify = false;
 
-  void run() const {
+  void run() {
+    if (points) return run_points();
     const contact_law model = law.resolve();
-    if (!physical.empty() && (!gamma.empty() || !g.empty()))
-      throw invalid_parameter("give either --physical or --gamma/--g, not both");
-    if (physical.empty() && gamma.empty())
-      throw invalid_parameter("cor needs --gamma (and optionally --g), or --physical m=..,k=..,gamma0=..,v0=..");
-    integration_method how;
-    if (method == "taylor") {
-      how = integration_method::taylor;
-    } else if (method == "adaptive") {
-      how = integration_method::adaptive;
-    } else {
-      throw invalid_parameter("parameter method must be 'taylor' or 'adaptive', got '" + method + "'");
+    if (deprecated_physical) read_deprecated_physical(*deprecated_physical, physical);
+    const bool is_physical = physical.given();
+    if (is_physical && (gamma || g))
+      throw invalid_parameter("give either the physical inputs (" + physical.given_names() +
+                              ") or the scaled --gamma/--g, not both");
+    if (!is_physical && !gamma)
+      throw invalid_parameter("cor needs --gamma (and optionally --g), or the physical inputs --m --k --gamma0 --v0 "
+                              "--gravity [--force], or --points FILE");
+    if (is_physical) {
+      physical.check("cor");
+      if (!physical.gamma0) throw invalid_parameter("cor: physical mode needs --gamma0 (the damping coefficient, SI)");
     }
+    const integration_method how = parse_method(method);
     with_working_precision(digits, [&]<class Real>() {
       json j;
       j["command"] = "cor";
@@ -68,26 +76,20 @@ struct cor_command {
       std::ostringstream text;
       text << "law        " << model.describe() << "\n";
       Real gamma_value, g_value;
-      if (!physical.empty()) {
-        const auto kv = parse_assignments(physical);
-        auto get = [&](const char* key) {
-          const auto it = kv.find(key);
-          return it == kv.end() ? Real(0) : parse_real<Real>(it->second, key);
-        };
-        physical_parameters<Real> p;
-        p.m = get("m"), p.k = get("k"), p.gamma0 = get("gamma0"), p.v0 = get("v0");
-        p.gravity = get("gravity"), p.force = get("F");
-        const scaled_parameters<Real> s = to_scaled(model, p);
-        gamma_value = s.gamma, g_value = s.g;
-        json phys;
-        for (const auto& [key, value] : kv) phys[key] = value;
-        j["physical"] = phys;
-        j["time_scale"] = number(s.time_scale);
-        j["length_scale"] = number(s.length_scale);
-        text << "physical   " << physical << "\n";
+      std::optional<scaled_parameters<Real>> scales;
+      if (is_physical) {
+        const physical_parameters<Real> p = physical.parameters<Real>(model);
+        scales = to_scaled(model, p);
+        gamma_value = scales->gamma, g_value = scales->g;
+        j["physical"] = physical.echo();
+        j["time_scale_s"] = number(scales->time_scale);
+        j["length_scale_m"] = number(scales->length_scale);
+        text << "physical   m = " << number(p.m) << " kg, k = " << number(p.k) << ", gamma0 = " << number(p.gamma0)
+             << ", v0 = " << number(p.v0) << " m/s, gravity = " << number(p.gravity) << " m/s^2, force = "
+             << number(p.force) << " N\n";
       } else {
-        gamma_value = parse_real<Real>(gamma, "gamma");
-        g_value = g.empty() ? Real(0) : parse_real<Real>(g, "g");
+        gamma_value = parse_real<Real>(*gamma, "gamma");
+        g_value = g ? parse_real<Real>(*g, "g") : Real(0);
       }
       solve_options<Real> options;
       options.method = how;
@@ -101,18 +103,11 @@ struct cor_command {
       j["gamma"] = number(gamma_value);
       j["g"] = number(g_value);
       j["precision"] = scalar_json<Real>();
-      j["method"] = std::string(to_string(r.method));
-      j["e"] = number(r.e);
-      j["one_minus_e"] = number(r.one_minus_e);
-      j["outcome"] = std::string(to_string(r.outcome));
-      j["contact_time"] = number(r.contact_time);
-      j["max_compression"] = number(r.max_compression);
-      if (r.outcome == impact_outcome::stick) j["stop_overlap"] = number(r.stop_overlap);
-      j["time_of_max_compression"] = number(r.time_of_max_compression);
-      j["energy_residual"] = number(r.energy_residual);
-      j["error_estimate"] = number(r.error_estimate);
-      j["steps"] = r.steps;
-      j["seconds"] = seconds;
+      add_result_json(j, r, seconds);
+      if (scales) {
+        j["contact_time_s"] = number(Real(r.contact_time * scales->time_scale));
+        j["max_compression_m"] = number(Real(r.max_compression * scales->length_scale));
+      }
 
       text << "gamma      " << number(gamma_value) << "\n"
            << "g          " << number(g_value) << "\n"
@@ -123,17 +118,43 @@ struct cor_command {
            << "e          " << number(r.e) << "\n"
            << "1 - e      " << number(r.one_minus_e) << "\n"
            << (r.outcome == impact_outcome::rebound ? "T_f        " : "T_stop     ")
-           << (r.outcome == impact_outcome::undecided ? std::string("unknown") : number(r.contact_time)) << "\n"
-           << "u_max      " << number(r.max_compression) << " at tau = " << number(r.time_of_max_compression) << "\n"
+           << (r.outcome == impact_outcome::undecided ? std::string("unknown") : number(r.contact_time))
+           << " (scaled)\n";
+      if (scales && r.outcome != impact_outcome::undecided)
+        text << "time       " << number(Real(r.contact_time * scales->time_scale)) << " s (contact)\n";
+      text << "u_max      " << number(r.max_compression) << " at tau = " << number(r.time_of_max_compression) << "\n"
            << (r.outcome == impact_outcome::stick ? "u_stop     " + number(r.stop_overlap) + " (where u' returns to 0, or the rest position)\n" : std::string())
            << "error      " << to_decimal_string(r.error_estimate, 3) << " (estimated, absolute, on e)\n"
            << "energy     " << to_decimal_string(r.energy_residual, 3) << " (residual of identity (6))\n"
            << "steps      " << r.steps << " (" << to_string(r.method) << ")\n"
-           << "time       " << seconds << " s\n"
+           << "seconds    " << seconds << " s\n"
            << "digits     " << decimal_digits<Real>() << " (working precision)\n";
       if (certify) certify_and_report<Real>(model, gamma_value, g_value, text, j);
       output.emit(text.str(), j);
     });
+  }
+
+  void run_points() const {
+    if (gamma || g || physical.given() || deprecated_physical || !law.model.empty() || !law.alpha.empty() ||
+        certify || output.json || !output.path.empty())
+      throw invalid_parameter("--points reads the law, gamma, g and digits of every point from its file; give only "
+                              "--points, --threads, --method, --tolerance and --max-steps with it");
+    if (threads < 1) throw invalid_parameter("--threads must be >= 1, got " + std::to_string(threads));
+    point_options o;
+    o.method = parse_method(method);
+    o.tolerance = tolerance;
+    o.max_steps = max_steps;
+    o.default_digits = digits;
+    o.threads = threads;
+    const std::size_t failed = solve_points(*points, o, std::cout);
+    if (failed) throw invalid_parameter(std::to_string(failed) + " point(s) of " + *points + " were refused (see their "
+                                        "\"error\" lines)");
+  }
+
+  static integration_method parse_method(const std::string& method) {
+    if (method == "taylor") return integration_method::taylor;
+    if (method == "adaptive") return integration_method::adaptive;
+    throw invalid_parameter("--method must be 'taylor' or 'adaptive', got '" + method + "'");
   }
 };
 
@@ -143,13 +164,21 @@ void setup(CLI::App& app) {
   cmd->output.add_to(app);
   app.add_option("--gamma", cmd->gamma, "scaled damping gamma >= 0");
   app.add_option("--g", cmd->g, "scaled load g (default 0)");
-  app.add_option("--physical", cmd->physical,
-                 "physical parameters instead of --gamma/--g: m=..,k=..,gamma0=..,v0=..[,gravity=..][,F=..] (SI)");
-  app.add_option("--digits", cmd->digits, "working precision in decimal digits")->capture_default_str();
+  cmd->physical.add_to(app);
+  app.add_option("--physical", cmd->deprecated_physical, "deprecated: use --m --k --gamma0 --v0 --gravity --force")
+      ->group("");
+  app.add_option("--points", cmd->points,
+                 "batch: one point per line of FILE (- for standard input), CSV with a header or JSON lines with "
+                 "law (or alpha, beta), gamma, g and optional digits; one JSON result per line");
+  app.add_option("--threads", cmd->threads, "with --points: worker threads")->capture_default_str();
+  app.add_option("--digits", cmd->digits, "working precision in decimal digits (with --points: the default)")
+      ->capture_default_str();
   app.add_option("--method", cmd->method, "integrator: taylor or adaptive")->capture_default_str();
   app.add_option("--tolerance", cmd->tolerance, "relative tolerance per step (0: working precision)")
       ->capture_default_str();
-  app.add_option("--max-steps", cmd->max_steps, "step budget")->capture_default_str();
+  app.add_option("--max-steps", cmd->max_steps, "step budget, >= 1")
+      ->capture_default_str()
+      ->check(CLI::Range(1.0, 1e12));
   app.add_flag("--certify", cmd->certify,
                "certify the digits: Taylor at two precisions and the independent adaptive method must agree");
   app.callback([cmd] { cmd->run(); });

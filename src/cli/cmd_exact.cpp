@@ -26,7 +26,7 @@ struct exact_command {
       json j;
       j["command"] = "exact";
       j["law"] = law_json(model);
-      j["gamma"] = gamma, j["g"] = g;
+      j["gamma"] = number(gamma_value), j["g"] = number(g_value);
       j["precision"] = scalar_json<Real>();
       j["exists"] = r.has_value();
       std::ostringstream text;

@@ -9,6 +9,7 @@
 // approximation (approximation_regression_test compares against it).
 #include "cli_common.hpp"
 #include "command_registry.hpp"
+#include "data_directory.hpp"
 
 #include <viscor/tables/approximation_errors.hpp>
 #include <viscor/config.hpp>
@@ -29,11 +30,13 @@ namespace fs = std::filesystem;
 /// The committed CoR tables of a directory (cor_*.csv), sorted by name.
 std::vector<std::string> cor_tables(const std::string& dir) {
   std::vector<std::string> out;
-  if (!fs::is_directory(dir)) throw error("data directory '" + dir + "' does not exist");
+  if (!fs::is_directory(dir)) throw invalid_parameter("--data: '" + dir + "' is not a directory");
   for (const auto& entry : fs::directory_iterator(dir)) {
     const std::string name = entry.path().filename().string();
     if (name.rfind("cor_", 0) == 0 && entry.path().extension() == ".csv") out.push_back(entry.path().string());
   }
+  if (out.empty())
+    throw invalid_parameter("--data: '" + dir + "' holds no certified CoR tables (cor_*.csv); nothing to report");
   std::sort(out.begin(), out.end());
   return out;
 }
@@ -86,7 +89,7 @@ const std::map<std::string, double>& printed_values() {
 }
 
 struct report_options {
-  std::string data = "reference_data", output, values;
+  std::string data, output, values;  // data: "" -> data_directory()
   bool csv = false, compare = false;
 };
 
@@ -286,7 +289,7 @@ void run_report(const report_options& o) {
 }
 
 struct baseline_options {
-  std::string data = "reference_data", output;
+  std::string data, output;  // data: "" -> data_directory()
 };
 
 void run_baseline(const baseline_options& o) {
@@ -317,7 +320,9 @@ void run_baseline(const baseline_options& o) {
 
 void setup(CLI::App& app) {
   auto report = std::make_shared<report_options>();
-  app.add_option("--data", report->data, "directory of the committed tables")->capture_default_str();
+  app.add_option("--data", report->data,
+                 "directory of the certified tables (default: $VISCOR_DATA, else the installed share/viscor, else the "
+                 "source tree's reference_data)");
   app.add_option("-o,--output", report->output, "write to FILE (CSV if it ends in .csv, else Markdown)");
   app.add_flag("--csv", report->csv, "CSV instead of Markdown");
   app.add_flag("--compare", report->compare, "print the report's values next to ours");
@@ -326,13 +331,18 @@ void setup(CLI::App& app) {
 
   CLI::App* baseline = app.add_subcommand("baseline", "write the regression baseline of the approximations' errors");
   auto b = std::make_shared<baseline_options>();
-  baseline->add_option("--data", b->data, "directory of the committed tables")->capture_default_str();
+  baseline->add_option("--data", b->data, "directory of the certified tables (default as for report)");
   baseline->add_option("-o,--output", b->output, "the baseline CSV")->required();
-  baseline->callback([b] { run_baseline(*b); });
+  baseline->callback([b] {
+    b->data = data_directory(b->data);
+    run_baseline(*b);
+  });
 
   app.require_subcommand(0, 1);
   app.callback([report, &app] {
-    if (app.get_subcommands().empty()) run_report(*report);
+    if (!app.get_subcommands().empty()) return;
+    report->data = data_directory(report->data);
+    run_report(*report);
   });
 }
 

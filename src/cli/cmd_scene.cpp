@@ -3,6 +3,7 @@
 // Output goes to a file only when every impact succeeded (write then rename).
 #include "cli_common.hpp"
 #include "command_registry.hpp"
+#include "data_directory.hpp"
 #include "scene_json.hpp"
 
 #include <viscor/scenes/error_map.hpp>
@@ -47,12 +48,18 @@ std::string seconds_text(double s) {
   return buffer;
 }
 
-/// The error map of `law` in `dir` (dir/<law name>.csv), if there is one.
-std::optional<error_map> find_map(const std::string& dir, const contact_law& law, std::string& note) {
+/// The error map of `law` in `dir` (dir/<law name>.csv), if there is one. A directory
+/// named by the user (`from` says where) must exist: a typo must not silently turn
+/// the approximations off.
+std::optional<error_map> find_map(const std::string& dir, const std::string& from, const contact_law& law,
+                                  std::string& note) {
   if (dir.empty()) {
-    note = "none (no --error-maps, scene error_maps or VISCOR_ERROR_MAPS): approximations not used";
+    note = "none (no --error-maps, scene error_maps, VISCOR_ERROR_MAPS or data directory): approximations not used";
     return std::nullopt;
   }
+  if (!std::filesystem::is_directory(dir))
+    throw invalid_parameter(from + ": '" + dir + "' is not a directory of error maps" +
+                            (std::filesystem::exists(dir) ? " (it is a file)" : " (it does not exist)"));
   if (law.name.empty()) {
     note = "none for a custom law: approximations not used";
     return std::nullopt;
@@ -78,13 +85,14 @@ struct scene_command {
     } catch (const invalid_parameter& e) {
       throw parse_error(file.locate("tolerance") + e.what());
     }
-    std::string dir = maps;
-    if (dir.empty()) dir = file.error_maps;
+    std::string dir = maps, from = "--error-maps";
+    if (dir.empty()) dir = file.error_maps, from = file.locate("error_maps") + "field error_maps";
     if (dir.empty())
-      if (const char* env = std::getenv("VISCOR_ERROR_MAPS")) dir = env;
+      if (const char* env = std::getenv("VISCOR_ERROR_MAPS"); env && *env) dir = env, from = "VISCOR_ERROR_MAPS";
+    if (dir.empty()) dir = default_error_maps(), from = "the data directory";
     std::string map_note;
-    const std::optional<error_map> map = find_map(dir, file.scene.law, map_note);
-    const bool as_json = output.json || (output.path.size() >= 5 && output.path.substr(output.path.size() - 5) == ".json");
+    const std::optional<error_map> map = find_map(dir, from, file.scene.law, map_note);
+    const bool as_json = output.as_json();
 
     with_working_precision(digits, [&]<class Real>() {
       const auto start = std::chrono::steady_clock::now();
@@ -104,8 +112,8 @@ struct scene_command {
       Real worst_bound = 0;
       if (!as_json) {
         csv.reserve(s.velocities.size() * 200);
-        csv += std::string("index,v0,gamma,g,outcome,sticking,e,one_minus_e,contact_time,") +
-               (s.relative ? "error_bound_relative" : "error_bound") + ",method,digits,seconds\n";
+        csv += std::string("index,v0,gamma,g,outcome,sticking,e,one_minus_e,contact_time_s,") +
+               (s.relative ? "empirical_bound_relative" : "empirical_bound") + ",method,working_digits,seconds\n";
       }
       run_scene(s, map ? &*map : nullptr, [&](const scene_row<Real>& row) {
         const evaluation<Real>& r = row.result;
@@ -113,21 +121,21 @@ struct scene_command {
         ++methods[to_string(r.method)];
         sticking += stuck;
         evaluation_seconds += r.seconds;
-        if (r.error_bound > worst_bound) worst_bound = r.error_bound;
+        if (r.empirical_bound > worst_bound) worst_bound = r.empirical_bound;
         const std::string t = row.contact_time ? full(*row.contact_time) : std::string();
         if (as_json) {
           json j;
           j["index"] = index, j["v0"] = full(row.v0), j["gamma"] = full(row.gamma), j["g"] = full(row.g);
           j["outcome"] = std::string(to_string(r.outcome)), j["sticking"] = stuck;
           j["e"] = full(r.e), j["one_minus_e"] = full(r.one_minus_e);
-          j["contact_time"] = row.contact_time ? json(t) : json(nullptr);
-          j["error_bound"] = short_number(r.error_bound);
-          j["method"] = to_string(r.method), j["digits"] = r.digits, j["seconds"] = r.seconds;
+          j["contact_time_s"] = row.contact_time ? json(t) : json(nullptr);
+          j[s.relative ? "empirical_bound_relative" : "empirical_bound"] = short_number(r.empirical_bound);
+          j["method"] = to_string(r.method), j["working_digits"] = r.digits, j["seconds"] = r.seconds;
           rows.push_back(std::move(j));
         } else {
           csv += std::to_string(index) + ',' + full(row.v0) + ',' + full(row.gamma) + ',' + full(row.g) + ',' +
                  std::string(to_string(r.outcome)) + ',' + (stuck ? "true" : "false") + ',' + full(r.e) + ',' +
-                 full(r.one_minus_e) + ',' + t + ',' + short_number(r.error_bound) + ',' + to_string(r.method) +
+                 full(r.one_minus_e) + ',' + t + ',' + short_number(r.empirical_bound) + ',' + to_string(r.method) +
                  ',' + std::to_string(r.digits) + ',' + seconds_text(r.seconds) + '\n';
         }
         ++index;
@@ -153,14 +161,14 @@ struct scene_command {
                 << " digits: scaled gamma " << s.calibration->gamma << " at g " << s.calibration->g
                 << ", |e - measured| <= " << s.calibration->e_error << ")";
       summary << "\n"
-              << "load       gravity = " << file.scene.gravity << " m/s^2, F = " << file.scene.force << " N\n"
+              << "load       gravity = " << file.scene.gravity << " m/s^2, force = " << file.scene.force << " N\n"
               << "impacts    " << index << " at tolerance " << file.scene.tolerance
               << (s.relative ? " (relative on 1 - e)" : " (absolute on e)") << ", " << decimal_digits<Real>()
               << " working digits\n"
               << "error map  " << map_note << "\n"
               << "methods   " << method_text.str() << "\n"
               << "sticking   " << sticking << "\n"
-              << "max bound  " << to_decimal_string(worst_bound, 3) << "\n"
+              << "max empirical bound  " << to_decimal_string(worst_bound, 3) << "\n"
               << "time       " << seconds_text(total) << " s (" << seconds_text(evaluation_seconds)
               << " s evaluating, " << seconds_text(resolve_seconds) << " s resolving the scene)\n";
 
@@ -170,22 +178,26 @@ struct scene_command {
         j["command"] = "scene";
         j["file"] = path;
         j["law"] = law_json(s.law);
-        j["mass"] = full(s.mass), j["stiffness"] = full(s.stiffness), j["gamma0"] = full(s.gamma0);
+        json physical;
+        physical["m"] = full(s.mass), physical["k"] = full(s.stiffness), physical["gamma0"] = full(s.gamma0);
+        physical["gravity"] = file.scene.gravity, physical["force"] = file.scene.force;
+        j["physical"] = physical;
         if (s.calibration) {
           json c;
-          c["measured_e"] = *file.scene.measured_e, c["speed"] = *file.scene.measured_speed;
+          c["measured_e"] = *file.scene.measured_e, c["v0"] = *file.scene.measured_speed;
           c["gravity"] = *file.scene.measured_gravity;
+          c["force"] = file.scene.measured_force ? *file.scene.measured_force : std::string("0");
           c["gamma0"] = s.calibration->gamma0;
           c["gamma"] = s.calibration->gamma, c["g"] = s.calibration->g;
-          c["e_error"] = s.calibration->e_error, c["digits"] = s.calibration->digits;
+          c["e_error"] = s.calibration->e_error;
+          c["precision"] = json{{"digits", s.calibration->digits}};
           j["calibration"] = c;
         }
-        j["gravity"] = file.scene.gravity, j["force"] = file.scene.force;
         j["tolerance"] = file.scene.tolerance;
         j["bound"] = s.relative ? "relative_one_minus_e" : "absolute";
-        j["digits"] = decimal_digits<Real>();
+        j["precision"] = scalar_json<Real>();
         j["error_map"] = map_note;
-        j["impacts"] = index, j["sticking"] = sticking, j["methods"] = method_json;
+        j["impacts"] = index, j["sticking_impacts"] = sticking, j["methods"] = method_json;
         j["seconds"] = total;
         j["rows"] = std::move(rows);
         body = j.dump(1) + "\n";
@@ -207,7 +219,8 @@ void setup(CLI::App& app) {
   app.add_option("file", cmd->path, "scene file (JSON; format in docs/scenes.md)")->required();
   cmd->output.add_to(app);
   app.add_option("--error-maps", cmd->maps,
-                 "directory of error maps <law>.csv (default: the scene's error_maps, then $VISCOR_ERROR_MAPS)");
+                 "directory of error maps <law>.csv (default: the scene's error_maps, then $VISCOR_ERROR_MAPS, then "
+                 "the data directory's error_maps)");
   app.callback([cmd] { cmd->run(); });
 }
 

@@ -50,7 +50,7 @@ class scene_reader : public node_reader {
     out.path = m_file;
     if (root.kind != spec_node::type::object) fail(root, "scene", "a scene must be a JSON object");
     scene_description& d = out.scene;
-    bool have_law = false, have_tolerance = false;
+    bool have_law = false, have_tolerance = false, have_gravity = false;
     for (std::size_t i = 0; i < root.members.size(); ++i) {
       const auto& [key, node] = root.members[i];
       out.lines[key] = root.member_lines[i];
@@ -67,6 +67,7 @@ class scene_reader : public node_reader {
         damping(node, d, out);
       } else if (key == "gravity") {
         d.gravity = number_text(node, key);
+        have_gravity = true;
       } else if (key == "force") {
         d.force = number_text(node, key);
       } else if (key == "velocities") {
@@ -93,10 +94,18 @@ class scene_reader : public node_reader {
     }
     if (!have_law) fail(root, "law", "missing (a named law such as \"kuwabara_kono\", or {\"alpha\": .., \"beta\": ..})");
     if (!have_tolerance) fail(root, "tolerance", "missing (the error bound every impact must meet, e.g. 1e-4)");
+    if (!have_gravity)
+      fail(root, "gravity", "missing (m/s^2 towards the wall, 0 for none): the load changes every CoR, so it never "
+                            "defaults");
     return out;
   }
 
  private:
+
+  /// A field spelt as before 0.2.0: still read, with a warning naming the new spelling.
+  void deprecated(const std::string& field, const std::string& spelling) const {
+    deprecation_warning(m_file + ": field " + field, spelling);
+  }
 
   template <class F>
   void members(const spec_node& node, const std::string& field, scene_file& out, F&& each) const {
@@ -134,13 +143,15 @@ class scene_reader : public node_reader {
 
   void bead(const spec_node& node, scene_description& d, scene_file& out) const {
     members(node, "bead", out, [&](const std::string& key, const spec_node& v, const std::string& path) {
-      if (key == "mass") d.mass = number_text(v, path);
-      else if (key == "stiffness") d.stiffness = number_text(v, path);
+      if (key == "m") d.mass = number_text(v, path);
+      else if (key == "k") d.stiffness = number_text(v, path);
+      else if (key == "mass") deprecated(path, "bead.m"), d.mass = number_text(v, path);
+      else if (key == "stiffness") deprecated(path, "bead.k"), d.stiffness = number_text(v, path);
       else if (key == "density") d.density = number_text(v, path);
       else if (key == "radius") d.radius = number_text(v, path);
       else if (key == "youngs_modulus") d.youngs_modulus = number_text(v, path);
       else if (key == "poisson_ratio") d.poisson_ratio = number_text(v, path);
-      else fail(v, path, "unknown field (known: mass, stiffness, density, radius, youngs_modulus, poisson_ratio)");
+      else fail(v, path, "unknown field (known: m, k, density, radius, youngs_modulus, poisson_ratio)");
     });
   }
 
@@ -161,16 +172,17 @@ class scene_reader : public node_reader {
     members(node, "damping", out, [&](const std::string& key, const spec_node& v, const std::string& path) {
       if (key == "gamma0") d.gamma0 = number_text(v, path);
       else if (key == "measured_e") d.measured_e = number_text(v, path);
-      else if (key == "speed") d.measured_speed = number_text(v, path);
+      else if (key == "v0") d.measured_speed = number_text(v, path);
+      else if (key == "speed") deprecated(path, "damping.v0"), d.measured_speed = number_text(v, path);
       else if (key == "gravity") d.measured_gravity = number_text(v, path);
       else if (key == "force") d.measured_force = number_text(v, path);
-      else fail(v, path, "unknown field (known: gamma0; or measured_e, speed, gravity, force)");
+      else fail(v, path, "unknown field (known: gamma0; or measured_e, v0, gravity, force)");
     });
     const bool measured = d.measured_e || d.measured_speed || d.measured_gravity || d.measured_force;
-    if (d.gamma0 && measured) fail(node, "damping", "give gamma0 or a measurement (measured_e, speed, gravity), not both");
-    if (!d.gamma0 && !measured) fail(node, "damping", "needs gamma0, or measured_e with speed and gravity");
+    if (d.gamma0 && measured) fail(node, "damping", "give gamma0 or a measurement (measured_e, v0, gravity), not both");
+    if (!d.gamma0 && !measured) fail(node, "damping", "needs gamma0, or measured_e with v0 and gravity");
     if (measured && !d.measured_e) fail(node, "damping.measured_e", "missing (the measured CoR)");
-    if (measured && !d.measured_speed) fail(node, "damping.speed", "missing (the impact speed of the measurement, m/s)");
+    if (measured && !d.measured_speed) fail(node, "damping.v0", "missing (the impact speed of the measurement, m/s)");
     if (measured && !d.measured_gravity)
       fail(node, "damping.gravity", "missing (gravity during the measurement, m/s^2; 0 for none): the load changes "
                                     "the calibrated damping");

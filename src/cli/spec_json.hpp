@@ -285,8 +285,8 @@ class spec_reader : public node_reader {
       } catch (const invalid_parameter& e) {
         fail(*beta_node, field + ".beta", e.what());
       }
-      if (!(a.approximate() >= 1)) fail(*alpha_node, field + ".alpha", "must be >= 1, got " + alpha);
-      if (!(b.approximate() >= 1)) fail(*beta_node, field + ".beta", "must be >= 1, got " + beta);
+      if (!a.at_least_one()) fail(*alpha_node, field + ".alpha", "must be >= 1, got " + alpha);
+      if (!b.at_least_one()) fail(*beta_node, field + ".beta", "must be >= 1, got " + beta);
       return make_law(a, b);
     } catch (const parse_error&) {
       throw;

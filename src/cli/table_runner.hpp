@@ -8,6 +8,7 @@
 #pragma once
 
 #include "cli_common.hpp"
+#include "test_hooks.hpp"
 
 #include <viscor/config.hpp>
 #include <viscor/tables/reference_table.hpp>
@@ -311,10 +312,8 @@ inline void run_table_job(const table_job& job) {
   for (std::size_t i = 0; i < job.indices.size(); ++i)
     if (!done.count(job.indices[i])) pending.push_back(i);
 
-  // Test hook: VISCOR_TABLE_STOP_AFTER=N makes the process interrupt itself
-  // (raise(SIGINT)) after N rows of this session, like a Ctrl-C.
-  long long stop_after = -1;
-  if (const char* s = std::getenv("VISCOR_TABLE_STOP_AFTER")) stop_after = std::atoll(s);
+  // Test seam (test_hooks.hpp; inert in the released binary): interrupt after N rows.
+  const long long stop_after = test_hooks::table_stop_after_rows();
 
   {
     detail::interrupt_guard guard;

@@ -1,5 +1,5 @@
 // The approximate CoR formulas of the report, each as a function of
-// (contact law, gamma, g), with the typos of ERRATA.md corrected:
+// (contact law, gamma, g), with the typos of docs/report-notes.md corrected:
 //   small g, O(gamma)       e = 1 - gamma C0 - gamma g C1                          eq. (22)
 //   large g, O(gamma)       e = sqrt(max(1 - 2 gamma C g^p, 0))                    eq. (23)
 //   Schwager-Poschel        e = 1 - gamma C0 - gamma g C1 - gamma^2 C2_SP          eqs. (25), (30); Kuwabara-Kono only

@@ -12,7 +12,7 @@
 //   h(x) = ((x^(1-theta) - x^(alpha+1)) / (theta + (1-theta) x - x^(alpha+1)))^(1/2)                           (51)
 //   x_k = cos(pi (2k+1)/(2n+2)) + 1                                                                             (52)
 //   a_{0,k} = B((beta + k - 1/2 + theta/2)/(alpha+theta), 1/2)/(alpha+theta),  a_{1,k} = a_{0,k+1} - a_{0,k},
-//   a_{j+2,k} = 2 a_{j+1,k+1} - 2 a_{j+1,k} - a_{j,k}   (53) as corrected in ERRATA.md (the report prints "- a_k").
+//   a_{j+2,k} = 2 a_{j+1,k+1} - 2 a_{j+1,k} - a_{j,k}   (53) as corrected in docs/report-notes.md (the report prints "- a_k").
 // At theta = 0 and theta = 1, h = 1 and M reduces to the Beta closed forms (96).
 //
 // NOTE on the order n (default 21, the report's choice), measured by

@@ -2,7 +2,7 @@
 // the report's Definition 1:
 //   int_0^{rho^(-1/lambda)} t^x (1 - rho t^lambda)^y dt = B((x+1)/lambda, y+1) / (lambda rho^((x+1)/lambda)).
 //
-// Conventions (as in Prop. 2, with the typos of ERRATA.md corrected):
+// Conventions (as in Prop. 2, with the typos of docs/report-notes.md corrected):
 //   I(g) = 2 int_0^{u_M} F^(1/2) u^(beta-1) du,  Q(g) = int_0^{u_M} F^(-1/2) u^(beta-1) du,
 //   F(u) = 1 + 2 (g u - u^(alpha+1)/(alpha+1)),  u_M(0) = ((alpha+1)/2)^(1/(alpha+1))  (eq. 20).
 // I carries the factor 2 of Prop. 2, so eq. (22) reads e = 1 - gamma beta I(0) - gamma g beta I'(0):
@@ -109,14 +109,14 @@ Real coefficient_C2_at_zero(const Real& alpha, const Real& beta) {
 }
 
 /// Schwager-Poschel's first coefficient for Kuwabara-Kono at g = 0: c1 = -C0(3/2, 3/2)/(3/2)
-/// (the report prints -1.15448854 with two digits swapped; ERRATA.md).
+/// (the report prints -1.15448854 with two digits swapped; docs/report-notes.md).
 template <class Real>
 Real schwager_poschel_c1() {
   const Real three_halves = Real(3) / 2;
   return -coefficient_C0(three_halves, three_halves) / three_halves;
 }
 
-/// Schwager-Poschel's second coefficient c2 = (3/5) c1^2 (the report prints 0.7982665553; ERRATA.md).
+/// Schwager-Poschel's second coefficient c2 = (3/5) c1^2 (the report prints 0.7982665553; docs/report-notes.md).
 template <class Real>
 Real schwager_poschel_c2() {
   const Real c1 = schwager_poschel_c1<Real>();

@@ -1,7 +1,7 @@
 // The integrals of the O(gamma^2) expansion (Prop. 2), by double-exponential
 // quadrature (Takahasi and Mori 1974; Bailey, Jeyabalan and Li 2005; Boost.Math)
 // at the working precision of Real:
-//   I(g)     = 2 int_0^{u_M} F^(1/2) u^(beta-1) du       eqs. (41)/(68), corrected as in ERRATA.md
+//   I(g)     = 2 int_0^{u_M} F^(1/2) u^(beta-1) du       eqs. (41)/(68), corrected as in docs/report-notes.md
 //   Q(g)     =   int_0^{u_M} F^(-1/2) u^(beta-1) du      eq. (42) corrected
 //   dI/dg(g) = 2 int_0^{u_M} F^(-1/2) u^beta du          eq. (19), with I's factor 2
 // with F(u) = 1 + 2 (g u - u^(alpha+1)/(alpha+1)) and u_M(g) the root of eq. (13).

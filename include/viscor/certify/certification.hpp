@@ -15,35 +15,18 @@
 // The outcome (rebound or stick) must be the same in all three: disagreement is
 // reported as uncertified (outcome_certified = false, 0 digits), never averaged.
 // NOTE: the reference needs only to be right to more digits than Real carries, since
-// agreement is capped at the working digits and the safety margin comes off that.
-// 5 extra digits (working/20 from 100 digits up) are enough. Measured: the Taylor
-// solve at 60 (110, 25) digits against the one at twice that precision, five named
-// laws at (gamma, g) = (0.05, 1), (1e-3, 0.05), (0.5, 0), (0.9, 10), (1e-6, 0),
-// (2, 0.3): rebounds agree to >= 58 of 60 (109 of 110, 24 of 25) digits in e, 1 - e,
-// T_f and u_max; the one ill-conditioned quantity, the stick time of Hertz with
-// linear damping at (2, 0.3), loses 19 digits at every precision (41 of 60, 91 of
-// 110, 6 of 25), so the working computations lose them too and the reference stays
-// ahead of anything they can agree on. (The linear law was left out of the
-// 220-digit measurement: the Taylor solve was wrong for it at 200+ digits then, fixed
-// since, see taylor_impact.hpp and solve_impact_test's 210/300-digit cases.)
-// Again at the reference precisions of double, long double, float128, mpfr_50 and
-// mpfr_100 (20, 24, 39, 55, 105 digits), eight points per law (the six above, (0.1,
-// 0.05), (1e-4, 10)): rebounds lose at most 0.6 digits, stick times 2.5 (Kuwabara-Kono
-// at (0.9, 10)), the ill-conditioned one 19-20 again. So the reference is ahead of the cap on every
-// well-conditioned quantity, and ahead of the working runs on the ill-conditioned one.
-// Cost (Kuwabara-Kono, the benchmark's points): the reference at 60 digits (+10, the
-// former default) was 1.8x a working Taylor solve at 50 digits, at 55 it is 1.25x:
-// 60 digits (201 bits) need a fourth limb and MPFR's generic product, 55 (184 bits)
-// stay on its three-limb fast path (which ends at 187 bits: mpfr_mul 7 ns there, 14 ns
-// at 188-192 bits, 17 ns at 193-256, measured with MPFR 4.2.0). At 100 digits +10 was
-// 1.16x, +5 is 1.08x. With 2 * digits + 10, set through certify_options, certify costs 8-13 Taylor solves.
+// agreement is capped at the working digits and the safety margin comes off that;
+// working + max(5, working/20) digits were measured to suffice (docs/performance.md,
+// section "certify/certification.hpp", has the measurements and the cost).
 //
 // Near the sticking threshold e -> 0 and its relative digits fall (e ~ sqrt of the
 // distance to the threshold); absolute digits of e are reported as well.
 #pragma once
 
 #include <viscor/impact/adaptive_impact.hpp>
+#include <viscor/certify/detail/perturbation.hpp>
 #include <viscor/core/contact_law.hpp>
+#include <viscor/core/detail/agreement_digits.hpp>
 #include <viscor/core/exceptions.hpp>
 #include <viscor/core/impact_result.hpp>
 #include <viscor/core/parameters.hpp>
@@ -77,17 +60,13 @@ inline std::string_view to_string(certified_source s) {
   return "?";
 }
 
-/// Options of certify. The perturbation is a test hook: it multiplies the damping
-/// gamma seen by one computation by (1 + perturbation), a deliberately wrong
-/// coefficient, so that a test can show that certification drops.
+/// Options of certify.
 struct certify_options {
   int safety_margin = 2;     ///< decimal digits subtracted from the agreement
   /// Precision of the reference run in decimal digits; 0: the default
   /// detail::reference_digits<Real>() = working + max(5, working/20), in a fixed-precision
   /// mpfr type (fast); any other value runs the reference in mpfr_real at that precision.
   int reference_digits = 0;
-  std::optional<certified_source> perturb;  ///< test hook: which computation to perturb
-  std::string perturbation = "0";           ///< relative perturbation of its gamma
 };
 
 /// One contributing computation, as a reader would audit it.
@@ -124,25 +103,6 @@ struct certified_result {
 
 namespace detail {
 
-// -log10(|a - b| / scale) floored, capped at `cap` (cap when equal).
-template <class Ref>
-int agreement_digits(const Ref& a, const Ref& b, const Ref& scale, int cap) {
-  using boost::math::isinf;
-  using boost::math::isnan;
-  using std::abs;
-  using std::floor;
-  using std::log10;
-  if (isnan(a) || isnan(b)) return 0;  // an undecided contact time agrees with nothing
-  if (isinf(a) || isinf(b)) return a == b ? cap : 0;
-  const Ref diff = abs(a - b);
-  if (diff == 0) return cap;
-  if (scale == 0) return 0;
-  const Ref d = floor(-log10(Ref(diff / abs(scale))));
-  if (d >= cap) return cap;
-  if (d <= 0) return 0;
-  return static_cast<int>(d);
-}
-
 /// Default reference precision: working + max(5, working/20) decimal digits.
 constexpr int reference_extra_digits(int working) { return working / 20 > 5 ? working / 20 : 5; }
 template <class Real>
@@ -152,35 +112,28 @@ int reference_digits() {
 }
 
 #if VISCOR_HAS_MPFR
-/// The reference type: fixed-precision mpfr at reference_digits<Real>() (mpfr_real
-/// for run-time precision).
+template <unsigned D>
+using mpfr_fixed = boost::multiprecision::number<boost::multiprecision::mpfr_float_backend<D>>;
+/// The reference type: fixed-precision mpfr at reference_digits<Real>(), derived
+/// from Real's width (mpfr_real for run-time precision, checked in certify).
 template <class Real>
 struct certify_reference {
   using type = mpfr_real;
 };
-template <unsigned D>
-using mpfr_fixed = boost::multiprecision::number<boost::multiprecision::mpfr_float_backend<D>>;
-template <>
-struct certify_reference<double> {
-  using type = mpfr_fixed<20>;  // 15 + 5
+template <class Real>
+  requires(std::numeric_limits<Real>::is_specialized && !is_mpfr<Real>::value)
+struct certify_reference<Real> {
+  static constexpr int working = fixed_decimal_digits<Real>();  // double 15, x87 long double 18, float128 33
+  using type = mpfr_fixed<static_cast<unsigned>(working + reference_extra_digits(working))>;
+  static_assert(fixed_decimal_digits<type>() >= working + reference_extra_digits(working),
+                "the certification reference must be wider than the working type by the intended margin");
 };
-template <>
-struct certify_reference<long double> {
-  using type = mpfr_fixed<24>;  // 19 + 5
-};
-#if VISCOR_HAS_FLOAT128
-template <>
-struct certify_reference<quad> {
-  using type = mpfr_fixed<39>;  // 34 + 5
-};
-#endif
 template <unsigned D, boost::multiprecision::mpfr_allocation_type A, boost::multiprecision::expression_template_option ET>
+  requires(D > 0)
 struct certify_reference<boost::multiprecision::number<boost::multiprecision::mpfr_float_backend<D, A>, ET>> {
   using type = mpfr_fixed<D + reference_extra_digits(static_cast<int>(D))>;
-};
-template <boost::multiprecision::mpfr_allocation_type A, boost::multiprecision::expression_template_option ET>
-struct certify_reference<boost::multiprecision::number<boost::multiprecision::mpfr_float_backend<0, A>, ET>> {
-  using type = mpfr_real;
+  static_assert(fixed_decimal_digits<type>() >= static_cast<int>(D) + reference_extra_digits(static_cast<int>(D)),
+                "the certification reference must be wider than the working type by the intended margin");
 };
 #endif
 
@@ -214,13 +167,14 @@ namespace detail {
 // The reference solve and every comparison, in the reference type Ref.
 template <class Ref, class Real>
 void certify_against_reference(const contact_law& law, const Real& gamma, const Real& g, const certify_options& options,
-                               int reference, unsigned caller_digits, const impact_result<Real>& taylor,
-                               const impact_result<Real>& adaptive, certified_result<Real>& out) {
+                               const certify_perturbation& perturbation, int reference, unsigned caller_digits,
+                               const impact_result<Real>& taylor, const impact_result<Real>& adaptive,
+                               certified_result<Real>& out) {
   const int working = out.working_digits;
   // NOTE: the inputs are exact binary numbers of Real; widen converts them exactly.
   Ref ref_gamma = widen<Ref>(gamma);
-  if (options.perturb == certified_source::taylor_reference)
-    ref_gamma *= 1 + parse_real<Ref>(options.perturbation, "perturbation");
+  if (perturbation.which == certified_source::taylor_reference)
+    ref_gamma *= 1 + parse_real<Ref>(perturbation.relative, "perturbation");
   const Ref ref_g = widen<Ref>(g);
   double seconds = 0;
   const impact_result<Ref> ref =
@@ -282,56 +236,74 @@ void certify_against_reference(const contact_law& law, const Real& gamma, const 
 
 }  // namespace detail
 
-/// Certifies e, 1 - e, T_f and u_max at (law, gamma, g) by three computations (see the
-/// header comment). Throws invalid_parameter for bad input, precision_unavailable
-/// without MPFR, and lets convergence_error of any computation through.
+namespace detail {
+
+/// certify with one computation deliberately wrong (a test seam, see
+/// detail/perturbation.hpp); certify itself calls it with no perturbation.
 template <class Real>
-certified_result<Real> certify(const contact_law& law, const Real& gamma, const Real& g,
-                               const certify_options& options = {}) {
+certified_result<Real> certify_perturbed(const contact_law& law, const Real& gamma, const Real& g,
+                                         const certify_options& options, const certify_perturbation& perturbation) {
   impact_parameters<Real>{law, gamma, g}.validate();
   if (options.safety_margin < 0)
     throw invalid_parameter("parameter safety_margin must be >= 0, got " + std::to_string(options.safety_margin));
 #if !VISCOR_HAS_MPFR
+  (void)perturbation;
   throw precision_unavailable("viscor::certify needs MPFR for its reference computation");
 #else
   const int working = decimal_digits<Real>();
   const unsigned caller_digits = std::is_same_v<Real, mpfr_real> ? mpfr_real::thread_default_precision() : 0u;
-  const int reference = options.reference_digits > 0 ? options.reference_digits : detail::reference_digits<Real>();
+  const int reference = options.reference_digits > 0 ? options.reference_digits : reference_digits<Real>();
   if (reference <= working)
     throw invalid_parameter("parameter reference_digits = " + std::to_string(reference) +
                             " must exceed the working precision of " + std::to_string(working) + " digits");
 
   auto perturbed = [&](certified_source s, const Real& x) {
-    if (options.perturb != s) return x;
-    return Real(x * (1 + parse_real<Real>(options.perturbation, "perturbation")));
+    if (perturbation.which != s) return x;
+    return Real(x * (1 + parse_real<Real>(perturbation.relative, "perturbation")));
   };
 
   certified_result<Real> out;
   out.working_digits = working;
   out.safety_margin = options.safety_margin;
   double seconds = 0;
-  const impact_result<Real> taylor = detail::timed(
+  const impact_result<Real> taylor = timed(
       [&] { return solve_impact_taylor<Real>(law, perturbed(certified_source::taylor, gamma), g, solve_options<Real>{}); },
       seconds);
-  out.computations.push_back(detail::record(certified_source::taylor, working, taylor, seconds));
-  const impact_result<Real> adaptive = detail::timed(
+  out.computations.push_back(record(certified_source::taylor, working, taylor, seconds));
+  const impact_result<Real> adaptive = timed(
       [&] {
         return solve_impact_adaptive<Real>(law, perturbed(certified_source::adaptive, gamma), g, solve_options<Real>{});
       },
       seconds);
-  out.computations.push_back(detail::record(certified_source::adaptive, working, adaptive, seconds));
+  out.computations.push_back(record(certified_source::adaptive, working, adaptive, seconds));
 
-  using Ref = typename detail::certify_reference<Real>::type;
+  using Ref = typename certify_reference<Real>::type;
   if (options.reference_digits > 0 || std::is_same_v<Ref, mpfr_real>) {
     scoped_precision precision(reference);
-    detail::certify_against_reference<mpfr_real>(law, gamma, g, options, reference, caller_digits, taylor, adaptive,
-                                                 out);
+    // Run-time precision: check what static_assert checks for the fixed types.
+    if (decimal_digits<mpfr_real>() < reference || decimal_digits<mpfr_real>() <= working)
+      throw precision_unavailable("certify: the reference precision (" + std::to_string(decimal_digits<mpfr_real>()) +
+                                  " digits) is not wider than the working precision (" + std::to_string(working) +
+                                  " digits)");
+    certify_against_reference<mpfr_real>(law, gamma, g, options, perturbation, reference, caller_digits, taylor,
+                                         adaptive, out);
   } else {
-    detail::certify_against_reference<Ref>(law, gamma, g, options, decimal_digits<Ref>(), caller_digits, taylor,
-                                           adaptive, out);
+    certify_against_reference<Ref>(law, gamma, g, options, perturbation, decimal_digits<Ref>(), caller_digits, taylor,
+                                   adaptive, out);
   }
   return out;
 #endif
+}
+
+}  // namespace detail
+
+/// Certifies e, 1 - e, T_f and u_max at (law, gamma, g) by three computations (see the
+/// header comment). Throws invalid_parameter for bad input, precision_unavailable
+/// without MPFR, and lets convergence_error of any computation through.
+template <class Real>
+certified_result<Real> certify(const contact_law& law, const Real& gamma, const Real& g,
+                               const certify_options& options = {}) {
+  return detail::certify_perturbed(law, gamma, g, options, detail::certify_perturbation{});
 }
 
 }  // namespace viscor

@@ -3,6 +3,7 @@
 // denominators to regularise u^(p/q) at u = 0), and the named presets.
 #pragma once
 
+#include <viscor/core/detail/exact_decimal.hpp>
 #include <viscor/core/exceptions.hpp>
 #include <viscor/core/real_io.hpp>
 
@@ -85,10 +86,17 @@ class exponent {
     return m_den == 1 ? std::to_string(m_num) : std::to_string(m_num) + "/" + std::to_string(m_den);
   }
 
-  /// Compares exponents as numbers in long double: enough to validate >= 1.
+  /// The exponent in long double, for display and rough comparisons only: never
+  /// for validation (0.99999999999999999999999 rounds to 1 there); use at_least_one.
   long double approximate() const {
     return m_decimal ? std::strtold(m_decimal->c_str(), nullptr)
                      : static_cast<long double>(m_num) / static_cast<long double>(m_den);
+  }
+
+  /// Exactly whether the exponent is >= 1, as the rational or decimal it was read as.
+  bool at_least_one() const {
+    if (!m_decimal) return m_num >= m_den;  // m_den > 0
+    return detail::exact_decimal::parse(*m_decimal, "exponent") >= detail::exact_decimal(1, 0);
   }
 
   friend bool operator==(const exponent& a, const exponent& b) {
@@ -144,9 +152,9 @@ struct contact_law {
 
   /// Throws invalid_parameter unless alpha >= 1 and beta >= 1.
   void validate() const {
-    if (!(alpha.approximate() >= 1))
+    if (!alpha.at_least_one())
       throw invalid_parameter("contact law exponent alpha must be >= 1, got alpha = " + alpha.to_string());
-    if (!(beta.approximate() >= 1))
+    if (!beta.at_least_one())
       throw invalid_parameter("contact law exponent beta must be >= 1, got beta = " + beta.to_string());
   }
 

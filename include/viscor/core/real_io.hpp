@@ -16,10 +16,11 @@
 
 namespace viscor {
 
-/// Significant decimal digits that make a Real round-trip through text.
+/// Significant decimal digits that make a Real round-trip through text
+/// (std::numeric_limits<T>::max_digits10 = ceil(binary log10 2) + 1).
 template <class Real>
 int roundtrip_digits() {
-  return decimal_digits<Real>() + 2;
+  return static_cast<int>(static_cast<long long>(binary_digits<Real>()) * 30103 / 100000) + 2;
 }
 
 /// x in scientific notation with `digits` significant digits (default: round-trip).

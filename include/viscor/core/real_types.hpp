@@ -14,6 +14,7 @@
 #endif
 
 #include <cmath>
+#include <limits>
 #include <type_traits>
 
 namespace viscor {
@@ -35,10 +36,25 @@ int binary_digits() {
   return boost::math::tools::digits<Real>();
 }
 
-/// Decimal digits that Real carries in full (floor(binary * log10 2)).
+/// The one rule for decimal precision (std::numeric_limits<T>::digits10): a type of
+/// `binary` significand bits carries floor((binary - 1) log10 2) decimal digits in
+/// full, i.e. every decimal number with that many significant digits survives the
+/// round trip through it. double 15, x87 long double 18, float128 33; mpfr at D
+/// decimal digits (Boost gives it at least D log2(10) + 1 bits) D.
+constexpr int decimal_digits_of_binary(long long binary) { return static_cast<int>((binary - 1) * 30103 / 100000); }
+
+/// Decimal digits that Real carries in full (decimal_digits_of_binary).
 template <class Real>
 int decimal_digits() {
-  return static_cast<int>(static_cast<long long>(binary_digits<Real>()) * 30103 / 100000);
+  return decimal_digits_of_binary(binary_digits<Real>());
+}
+
+/// decimal_digits for a type of fixed precision, at compile time (for static_assert).
+template <class Real>
+constexpr int fixed_decimal_digits() {
+  static_assert(std::numeric_limits<Real>::is_specialized && std::numeric_limits<Real>::radix == 2,
+                "fixed_decimal_digits needs a binary type of fixed precision");
+  return decimal_digits_of_binary(std::numeric_limits<Real>::digits);
 }
 
 /// Machine epsilon of Real, computed in Real (never through double).

@@ -1,56 +1,68 @@
 // One impact, integrated by Taylor series to the working precision, with exact
-// treatment of both ends of the contact (issue 3). The phases:
+// treatment of both ends of the contact (issue 3). solve() runs the phases below
+// in order; each is a function from the state it starts at to what happened (an
+// outcome) and the state it ends at (contact_state: overlap u, velocity v = u',
+// time tau, dissipated energy D). sigma is the variable of the endpoint system:
+// s = u^(1/Q) for rational exponents, ln u otherwise.
 //
-// 1. Start (u = 0, v = 1): the endpoint system in sigma (u = s^Q for rational
-//    exponents, u = exp(sigma) otherwise; detail/impact_systems.hpp), forward
-//    until v has fallen to half its peak, so that it stays far from the
-//    turning point v = 0, where dtau/dsigma = J/v is singular.
-// 2. Around maximal compression: tau as independent variable, u > 0 bounded
-//    away from 0, so u^alpha, u^beta are analytic. Events on the step
+// 1. start_phase (u = 0, v = 1): the endpoint system in sigma
+//    (detail/impact_systems.hpp), forward until v has fallen to 4/5 of its
+//    peak, so that it stays far from the turning point v = 0, where
+//    dtau/dsigma = J/v is singular.
+// 2. time_phase, around maximal compression: tau as independent variable, u > 0
+//    bounded away from 0, so u^alpha, u^beta are analytic. Events on the step
 //    polynomial: v = 0 (maximal compression), v = 0 again with u > 0 (the bead
-//    sticks). Leaves for phase 3 as soon as the rest of the path provably keeps
-//    v <= v1/2 < 0 down to u = 0: with V = -v, over [0, u1]
+//    turns back: it sticks). It leaves for phase 3 as soon as the rest of the
+//    path provably keeps v <= v1/2 < 0 down to u = 0: with V = -v, over [0, u1]
 //        V(0) >= V1 - g+ u1 / min V - gamma u1^beta,
-//    so 4 g+ u1 + 2 gamma u1^beta V1 <= V1^2 is enough.
-// 2b. g = 0 and alpha + 1 = 2 beta (linear, Tsuji), underdamped: after maximal
-//    compression, the scale-free spiral_system in ln u (impact_systems.hpp),
-//    so that near critical damping, where the bead creeps back along a slow
-//    spiral and e = exp(-pi xi/sqrt(1 - xi^2)) is tiny, e keeps its relative
-//    digits; phase 3 then runs on the problem rescaled to u = 1.
-// 3. End: the endpoint system backwards to u = 0 exactly (s = 0), or to a
-//    tiny u_eps and the leading terms of the generalized series
+//    so 4 g+ u1 + 2 gamma u1^beta V1 <= V1^2 is enough. Outcomes: leaves,
+//    spirals (2b), turns_back or rests (sticking, below), undamped (gamma = 0).
+// 2b. spiral_phase, g = 0 and alpha + 1 = 2 beta (linear, Tsuji), underdamped:
+//    after maximal compression, the scale-free spiral_system in ln u
+//    (impact_systems.hpp), so that near critical damping, where the bead creeps
+//    back along a slow spiral and e = exp(-pi xi/sqrt(1 - xi^2)) is tiny, e keeps
+//    its relative digits; phase 3 then runs on the problem rescaled to u = 1.
+// 3. End, in four steps. way_out: the endpoint system backwards to u = 0
+//    exactly (s = 0), or to a tiny u_eps; close_by_series: [0, u_eps] by the
+//    leading terms of the generalized series
 //        v(u) = v0 + g u/v0 - gamma u^beta - u^(alpha+1)/((alpha+1) v0) + O(u^2)
 //    (u_eps is chosen so that each retained term is below tol |v|, hence the
-//    neglected ones below tol^2).
-// Then e = -v(T_f), and 1 - e = D/(1 + e) from the dissipated energy
+//    neglected ones below tol^2); unscale_spiral (after 2b); choose_e.
+// choose_e: e = -v(T_f), or 1 - e = D/(1 + e) from the dissipated energy
 // D = 2 gamma beta int v^2 u^(beta-1) dtau (eq. 6), integrated along as a state,
 // so 1 - e keeps full relative precision as gamma -> 0. Energy balance: with
 // E = v^2/2 + u^(alpha+1)/(alpha+1) - g u, dE/dtau = -D', so 1 - 2E - D = 0 at
 // every point of the path; its value at the end is energy_residual.
 //
 // Sticking (e = 0) is an outcome: v returns to 0 with u > 0 (an event), or the
-// state enters a region it provably never leaves without reaching u = 0:
-// * g = 0, after maximal compression, w = v + gamma u^beta > 0: the curve
-//   w = c gamma u^beta is a barrier if u^(alpha+1-2 beta) <= c(1-c) gamma^2 beta
-//   on (0, u] (possible when alpha + 1 >= 2 beta); the bead creeps into (0, 0)
-//   (for alpha = beta = 1 this is exactly gamma >= 2).
-// * g > 0, equilibrium u_eq = g^(1/alpha): the sector between v = 0 and
-//   v = -+kappa (u - u_eq) traps the state when kappa^2 - Gamma kappa + A <= 0,
-//   Gamma the least damping gamma beta u^(beta-1), A the largest stiffness
-//   alpha u^(alpha-1) over the remaining range; the bead creeps to u_eq.
-// * g > 0, the state equals u_eq up to rounding (at_rest): the turn, if any,
-//   is below the working precision.
+// state enters a region it provably never leaves without reaching u = 0 (the
+// sticking proofs, each returning the sticking_proof it established):
+// * creeps_to_rest, g = 0, after maximal compression, w = v + gamma u^beta > 0:
+//   the curve w = c gamma u^beta is a barrier if u^(alpha+1-2 beta) <=
+//   c(1-c) gamma^2 beta on (0, u] (possible when alpha + 1 >= 2 beta); the bead
+//   creeps into (0, 0) (for alpha = beta = 1 this is exactly gamma >= 2).
+// * creeps_to_equilibrium_from_above/below, g > 0, equilibrium u_eq = g^(1/alpha):
+//   the sector between v = 0 and v = -+kappa (u - u_eq) traps the state when
+//   kappa^2 - Gamma kappa + A <= 0, Gamma the least damping gamma beta u^(beta-1),
+//   A the largest stiffness alpha u^(alpha-1) over the remaining range; the bead
+//   creeps to u_eq.
+// * at_rest, g > 0: the state equals u_eq up to rounding: the turn, if any, is
+//   below the working precision.
 // All three report contact_time = +infinity; stop_overlap is the turning point
 // u_s, or the rest position u_eq (0 for g = 0).
+//
+// The GBS solver (adaptive_impact.hpp) makes its own exit, barrier and energy
+// arguments on purpose: the two solvers share no phase code (a shared proof
+// would be a shared blind spot).
 #pragma once
 
 #include <viscor/core/contact_law.hpp>
-#include <viscor/impact/detail/impact_systems.hpp>
 #include <viscor/core/exceptions.hpp>
 #include <viscor/core/impact_result.hpp>
 #include <viscor/core/parameters.hpp>
 #include <viscor/core/real_io.hpp>
 #include <viscor/core/real_types.hpp>
+#include <viscor/impact/detail/impact_systems.hpp>
 #include <viscor/ode/taylor_integrator.hpp>
 
 #include <boost/math/constants/constants.hpp>
@@ -60,7 +72,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
-#include <numeric>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -68,76 +80,142 @@ namespace viscor {
 
 namespace detail {
 
+/// A point of the contact: overlap u, velocity v = u', time tau, dissipated energy D.
+template <class Real>
+struct contact_state {
+  Real u, v, tau, D;
+};
+
+/// What a sticking proof of taylor_impact_solver established (file comment).
+enum class sticking_proof {
+  none,                   ///< nothing
+  creeps_to_origin,       ///< g = 0: under the barrier w = c gamma u^beta the bead creeps into (0, 0)
+  creeps_to_equilibrium,  ///< g > 0: in a sector about u_eq the bead creeps to u_eq
+  at_rest,                ///< g > 0: the state is u_eq up to rounding
+};
+
+/// How the time phase ended.
+enum class time_outcome {
+  leaves,      ///< past maximal compression, v <= v1/2 < 0 provably down to u = 0: the way out follows
+  spirals,     ///< g = 0, alpha + 1 = 2 beta, underdamped, past maximal compression: the spiral phase follows
+  turns_back,  ///< v = 0 again with u > 0: the bead sticks at the turning point
+  rests,       ///< a sticking proof holds (time_phase_end::proof)
+  undamped,    ///< gamma = 0: time-reversible, e = 1 exactly
+};
+
+template <class Real>
+struct time_phase_end {
+  time_outcome outcome = time_outcome::leaves;
+  contact_state<Real> state{};  ///< where the phase ended (unused for undamped)
+  sticking_proof proof = sticking_proof::none;  ///< for rests
+  bool past_max_compression = false;
+  /// tau and u at maximal compression (+infinity and u_eq when the bead rests before it)
+  Real tau_max = 0, u_max = 0;
+};
+
+/// Where the spiral phase hands over to the way out: the state of the problem
+/// rescaled to u = 1, and what unscale_spiral needs to scale back.
+template <class Real>
+struct spiral_exit {
+  contact_state<Real> scaled;  ///< u = 1, v = r = v/u^c, tau = 0, D = 0
+  Real log_scale;              ///< ln lambda, lambda the overlap at the exit
+  Real tau_before, D_before;   ///< tau and D of the path up to the exit
+  Real error;                  ///< relative error of e so far (the way out adds tol per step)
+};
+
+/// Which identity choose_e took e from.
+enum class e_source { trajectory, dissipated_energy };
+
+template <class Real>
+struct restitution {
+  Real e, one_minus_e, error_estimate, energy_residual;
+  e_source source = e_source::trajectory;
+};
+
 template <class Real>
 class taylor_impact_solver {
   using ts = time_system<Real>;
   using es = endpoint_system<Real>;
   using ss = spiral_system<Real>;
+  using state = contact_state<Real>;
 
  public:
   taylor_impact_solver(const contact_law& law, const Real& gamma, const Real& g, const solve_options<Real>& options)
-      : m_law(law), m_options(options) {
+      : m_law(law), m_options(options), m_c(make_impact_constants(law, gamma, g)) {
+    using std::pow;
     m_tol = options.tolerance > 0 ? options.tolerance : epsilon<Real>();
     if (m_tol < epsilon<Real>()) m_tol = epsilon<Real>();
-    auto& c = m_c;
-    c.alpha = law.alpha.value<Real>();
-    c.beta = law.beta.value<Real>();
-    c.gamma = gamma;
-    c.g = g;
-    c.alpha_plus_one = c.alpha + 1;
-    c.beta_plus_one = c.beta + 1;
-    c.gamma_beta = gamma * c.beta;
-    c.two_gamma = 2 * gamma;
-    c.two_gamma_beta = 2 * c.gamma_beta;
-    c.alpha_equals_beta = law.alpha == law.beta;
-    c.beta_is_one = law.beta.is_rational() && law.beta.numerator() == 1 && law.beta.denominator() == 1;
-    c.alpha_is_one = law.alpha.is_rational() && law.alpha.numerator() == 1 && law.alpha.denominator() == 1;
-    if (c.alpha > 1) {
-      using std::pow;
-      m_u_growth = pow(Real(4), 1 / (c.alpha - 1));
-    }
-    // NOTE: u = s^Q needs polynomials of degree Q(alpha+1) - 1; for huge
-    // denominators the exponential variable is cheaper and just as exact.
+    if (m_c.alpha > 1) m_u_growth = pow(Real(4), 1 / (m_c.alpha - 1));
+    if (m_c.g > 0) m_u_eq = pow(m_c.g, 1 / m_c.alpha);
     if (law.alpha.is_rational() && law.beta.is_rational()) {
-      const long q = std::lcm(law.alpha.denominator(), law.beta.denominator());
-      if (q <= 64) {
-        const long qa = q / law.alpha.denominator() * law.alpha.numerator();
-        const long qb = q / law.beta.denominator() * law.beta.numerator();
-        if (qa <= 512 && qb <= 512) {
-          c.use_root_variable = true;
-          c.Q = q, c.Q_alpha = qa, c.Q_beta = qb;
-        }
-      }
       // alpha + 1 = 2 beta, g = 0, underdamped: the spiral variables (impact_systems.hpp).
       const long p1 = law.alpha.numerator(), q1 = law.alpha.denominator();
       const long p2 = law.beta.numerator(), q2 = law.beta.denominator();
-      m_spiral = g == 0 && gamma > 0 && (p1 + q1) * q2 == 2 * p2 * q1 &&
-                 c.gamma_beta * c.gamma_beta < 4 * c.beta;
+      m_spiral_possible = g == 0 && gamma > 0 && (p1 + q1) * q2 == 2 * p2 * q1 &&
+                          m_c.gamma_beta * m_c.gamma_beta < 4 * m_c.beta;
     }
   }
 
   impact_result<Real> solve() {
-    using std::abs;
     es end_sys(m_c, taylor_order(m_tol), m_tol);
     ts time_sys(m_c, taylor_order(m_tol), m_tol);
     taylor_integrator<Real, es> end_int(end_sys, m_tol);
     taylor_integrator<Real, ts> time_int(time_sys, m_tol);
-    m_result.method = integration_method::taylor;
+    impact_result<Real> result;
+    result.method = integration_method::taylor;
 
-    if (!start_phase(end_sys, end_int)) return finish();
-    if (!time_phase(time_int)) return finish();
-    if (m_in_spiral) {
+    const time_phase_end<Real> around = time_phase(time_int, start_phase(end_sys, end_int));
+    result.time_of_max_compression = around.tau_max;
+    result.max_compression = around.u_max;
+    switch (around.outcome) {
+      case time_outcome::undamped:
+        // NOTE: without damping the motion is time-reversible: T_f = 2 tau_max
+        // and e = 1 exactly, however ill-conditioned the way back is (g = 1e12).
+        result.outcome = impact_outcome::rebound;
+        result.e = 1, result.one_minus_e = 0, result.energy_residual = 0;
+        result.contact_time = 2 * around.tau_max;
+        result.error_estimate = 0;
+        return finish(result);
+      case time_outcome::turns_back:
+        stick(result, around.state, around.state.tau, around.state.u, true);
+        return finish(result);
+      case time_outcome::rests:
+        // NOTE: at rest after maximal compression the energy check of a turn applies: E = P(u_eq) < 0.
+        stick(result, around.state, std::numeric_limits<Real>::infinity(), m_u_eq,
+              around.proof == sticking_proof::at_rest && around.past_max_compression);
+        return finish(result);
+      case time_outcome::leaves:
+      case time_outcome::spirals:
+        break;
+    }
+
+    std::optional<spiral_exit<Real>> spiral;
+    if (around.outcome == time_outcome::spirals) {
       ss spiral_sys(m_c, taylor_order(m_tol));
       taylor_integrator<Real, ss> spiral_int(spiral_sys, m_tol);
-      spiral_phase(spiral_int);
+      spiral = spiral_phase(spiral_int, around.state, around.u_max);
     }
-    end_phase(end_int);
-    return finish();
+    Real* spiral_error = spiral ? &spiral->error : nullptr;
+    state end = way_out(end_int, spiral ? spiral->scaled : around.state, spiral_error);
+    if (!m_c.use_root_variable) end = close_by_series(end);
+    if (spiral) end = unscale_spiral(end, *spiral);
+    const restitution<Real> e = choose_e(end, spiral_error);
+    result.outcome = impact_outcome::rebound;
+    result.contact_time = end.tau;
+    result.energy_residual = e.energy_residual;
+    result.e = e.e;
+    result.one_minus_e = e.one_minus_e;
+    result.error_estimate = e.error_estimate;
+    return finish(result);
   }
 
  private:
-  // ---- phase 1: from u = 0 until v has dropped to half its peak ----
-  bool start_phase(es& sys, taylor_integrator<Real, es>& integ) {
+  // ---- phase 1 ----
+  // Takes the endpoint system and its integrator; starts at first contact
+  // (u = 0, v = 1, tau = D = 0) and returns the state where v has fallen below
+  // m_switch_speed times its peak (u > 0, v > 0: still compressing). That is its
+  // only outcome; a step it cannot take throws convergence_error.
+  state start_phase(const es& sys, taylor_integrator<Real, es>& integ) {
     using std::log;
     using std::pow;
     const auto& c = m_c;
@@ -181,124 +259,144 @@ class taylor_impact_solver {
       note_speed(x[es::v]);
       if (x[es::v] < v_peak * m_switch_speed) break;
     }
-    m_tau = x[es::tau];
-    m_u = sys.u_of(sigma);
-    m_v = x[es::v];
-    m_D = x[es::D];
-    return true;
+    return state{sys.u_of(sigma), x[es::v], x[es::tau], x[es::D]};
   }
 
-  // ---- phase 2: tau around maximal compression; false when the bead sticks ----
-  bool time_phase(taylor_integrator<Real, ts>& integ) {
-    using std::abs;
-    using std::sqrt;
-    std::vector<Real> y{m_u, m_v, m_D}, y1(3);
-    bool compressing = true;
+  // ---- phase 2 ----
+  // Takes the state start_phase returned (u > 0, v > 0) and integrates in tau
+  // through maximal compression. Returns how the phase ended (time_outcome), the
+  // state there, whether it had passed maximal compression, and tau and u at
+  // maximal compression; a rests outcome carries the sticking proof.
+  time_phase_end<Real> time_phase(taylor_integrator<Real, ts>& integ, const state& from) {
+    std::vector<Real> y{from.u, from.v, from.D}, y1(3);
+    Real tau = from.tau;
+    time_phase_end<Real> end;
     for (;;) {
-      // NOTE: for integer exponents nothing stops a step at u = 0, so after
-      // maximal compression a step may not more than halve u at the initial speed.
-      Real h_cap = 1 / epsilon<Real>();
-      if (!compressing && y[ts::v] < 0) h_cap = y[ts::u] / (2 * abs(y[ts::v]));
-      Real h = integ.expand(m_tau, y, h_cap);
-      // Events are found from the signs of v at the ends of a step, so a step
-      // must not span two zeros of v. NOTE: for entire solutions (linear law)
-      // the Jorba-Zou step grows like p/e^3 with the order p (12 time units at
-      // 210 digits, two periods: the bead "stuck"); one radian of the fastest
-      // oscillation, omega^2 = alpha u^(alpha-1), keeps a zero of v about
-      // pi/omega from the next (Sturm comparison). omega grows with u: at the
-      // end of the step 2 radians are allowed (cheap test: u grew less than
-      // m_u_growth, i.e. omega at most 2-fold).
-      const Real& omega2 = integ.system().stiffness();
-      if (h * h * omega2 > 1) h = 1 / sqrt(omega2);
-      for (int tries = 0;; ++tries) {
-        integ.values(y1, h);
-        if (isfinite_(y1[ts::u]) && isfinite_(y1[ts::v]) && y1[ts::u] > y[ts::u] / 4 &&
-            (!(y1[ts::u] > m_u_growth * y[ts::u]) || h * h * stiffness_at(y1[ts::u]) <= 4))
-          break;
-        h /= 2;
-        check_tries(tries, "maximal compression phase");
-      }
+      const Real h = time_step(integ, tau, y, y1, !end.past_max_compression);
       count_step();
-      if (compressing && y1[ts::v] <= 0) {
+      if (!end.past_max_compression && y1[ts::v] <= 0) {
         const Real t = y[ts::v] == 0 ? Real(0) : integ.locate(ts::v, Real(0), h, "maximal compression (v = 0)");
-        m_result.time_of_max_compression = m_tau + t;
-        m_result.max_compression = integ.value(ts::u, t);
-        compressing = false;
+        end.tau_max = tau + t;
+        end.u_max = integ.value(ts::u, t);
+        end.past_max_compression = true;
         if (m_c.gamma == 0) {
-          // NOTE: without damping the motion is time-reversible: T_f = 2 tau_max
-          // and e = 1 exactly, however ill-conditioned the way back is (g = 1e12).
-          m_result.outcome = impact_outcome::rebound;
-          m_result.e = 1, m_result.one_minus_e = 0, m_result.energy_residual = 0;
-          m_result.contact_time = 2 * m_result.time_of_max_compression;
-          m_result.error_estimate = 0;
-          return false;
+          end.outcome = time_outcome::undamped;
+          return end;
         }
-      } else if (!compressing && y1[ts::v] >= 0) {
+      } else if (end.past_max_compression && y1[ts::v] >= 0) {
         const Real t = integ.locate(ts::v, Real(0), h, "sticking (v = 0)");
-        m_tau += t;
+        tau += t;
         integ.values(y, t);
         y[ts::v] = 0;
-        set_state(y);
-        stick(m_tau, true);
-        return false;
+        end.state = state{y[ts::u], y[ts::v], tau, y[ts::D]};
+        end.outcome = time_outcome::turns_back;
+        return end;
       }
-      m_tau += h;
+      tau += h;
       y.swap(y1);
       note_speed(y[ts::v]);
-      set_state(y);
-      if (compressing) {
-        if (creeps_to_equilibrium_from_below() || at_rest()) {
-          m_result.time_of_max_compression = std::numeric_limits<Real>::infinity();
-          m_result.max_compression = m_u_eq;
-          stick(std::numeric_limits<Real>::infinity());
-          return false;
+      end.state = state{y[ts::u], y[ts::v], tau, y[ts::D]};
+      if (!end.past_max_compression) {
+        end.proof = creeps_to_equilibrium_from_below(end.state);
+        if (end.proof == sticking_proof::none) end.proof = at_rest(end.state);
+        if (end.proof != sticking_proof::none) {
+          end.tau_max = std::numeric_limits<Real>::infinity();
+          end.u_max = m_u_eq;
+          end.outcome = time_outcome::rests;
+          return end;
         }
       } else {
-        if (leaves_without_turning()) return true;
-        if (creeps_to_rest()) {
-          stick(std::numeric_limits<Real>::infinity());
-          return false;
+        if (leaves_without_turning(end.state, end.u_max)) {
+          end.outcome = time_outcome::leaves;
+          return end;
         }
-        if (at_rest()) {
-          // NOTE: the energy check of a turn applies: E = P(u_eq) < 0.
-          stick(std::numeric_limits<Real>::infinity(), true);
-          m_result.stop_overlap = m_u_eq;
-          return false;
+        end.proof = creeps_to_rest(end.state);
+        if (end.proof == sticking_proof::none) end.proof = at_rest(end.state);
+        if (end.proof != sticking_proof::none) {
+          end.outcome = time_outcome::rests;
+          return end;
         }
-        if (enters_spiral()) return true;
+        if (enters_spiral(end.state)) {
+          end.outcome = time_outcome::spirals;
+          return end;
+        }
       }
     }
   }
 
-  // ---- phase 2b (spiral_system): g = 0, alpha + 1 = 2 beta, underdamped ----
-  // Entered after maximal compression once r = v/u^c <= -1/(2 sqrt c), left
-  // for phase 3 when the exit test of phase 2 holds (for g = 0 and beta = c it
-  // reads r <= -2 gamma, with u <= u_max/2). r falls monotonically.
-  bool enters_spiral() {
-    using std::pow;
+  // One step of the time phase from (tau, y): the Jorba-Zou step, capped so that
+  // it cannot span two zeros of v (nor, past maximal compression, more than halve
+  // u), halved until the state y1 it reaches is acceptable. Returns the step h;
+  // y1 holds the state at tau + h.
+  Real time_step(taylor_integrator<Real, ts>& integ, const Real& tau, const std::vector<Real>& y,
+                 std::vector<Real>& y1, bool compressing) {
+    using std::abs;
     using std::sqrt;
-    if (!m_spiral || !(m_v < 0)) return false;
-    const Real r = m_v / pow(m_u, m_c.beta);
-    if (!(4 * m_c.beta * r * r >= 1)) return false;
-    m_in_spiral = true;
-    return true;
+    // NOTE: for integer exponents nothing stops a step at u = 0, so after
+    // maximal compression a step may not more than halve u at the initial speed.
+    Real h_cap = 1 / epsilon<Real>();
+    if (!compressing && y[ts::v] < 0) h_cap = y[ts::u] / (2 * abs(y[ts::v]));
+    Real h = integ.expand(tau, y, h_cap);
+    // Events are found from the signs of v at the ends of a step, so a step
+    // must not span two zeros of v. NOTE: for entire solutions (linear law)
+    // the Jorba-Zou step grows like p/e^3 with the order p (docs/performance.md);
+    // one radian of the fastest oscillation, omega^2 = alpha u^(alpha-1), keeps
+    // a zero of v about pi/omega from the next (Sturm comparison). omega grows
+    // with u: at the end of the step 2 radians are allowed (cheap test: u grew
+    // less than m_u_growth, i.e. omega at most 2-fold).
+    const Real& omega2 = integ.system().stiffness();
+    if (h * h * omega2 > 1) h = 1 / sqrt(omega2);
+    for (int tries = 0;; ++tries) {
+      integ.values(y1, h);
+      if (isfinite_(y1[ts::u]) && isfinite_(y1[ts::v]) && y1[ts::u] > y[ts::u] / 4 &&
+          (!(y1[ts::u] > m_u_growth * y[ts::u]) || h * h * stiffness_at(y1[ts::u]) <= 4))
+        break;
+      h /= 2;
+      check_tries(tries, "maximal compression phase");
+    }
+    return h;
   }
 
-  void spiral_phase(taylor_integrator<Real, ss>& integ) {
+  // Phase 2 -> 3: the rest of the path keeps v <= v1/2 < 0 (see the file comment).
+  bool leaves_without_turning(const state& s, const Real& u_max) const {
+    using std::pow;
+    if (!(s.v < 0) || s.u > u_max * m_switch_overlap) return false;
+    const Real V = -s.v;
+    Real lhs = 2 * m_c.gamma * pow(s.u, m_c.beta) * V;
+    if (m_c.g > 0) lhs += 4 * m_c.g * s.u;
+    return lhs <= V * V;
+  }
+
+  // Phase 2 -> 2b: entered after maximal compression once r = v/u^c <= -1/(2 sqrt c).
+  bool enters_spiral(const state& s) const {
+    using std::pow;
+    if (!m_spiral_possible || !(s.v < 0)) return false;
+    const Real r = s.v / pow(s.u, m_c.beta);
+    return 4 * m_c.beta * r * r >= 1;
+  }
+
+  // ---- phase 2b (spiral_system): g = 0, alpha + 1 = 2 beta, underdamped ----
+  // Takes the state where the time phase entered the spiral and the maximal
+  // compression u_max; integrates in sigma = ln u until the exit test of phase 2
+  // holds (for g = 0 and beta = c it reads r <= -2 gamma, with u <= u_max/2; r
+  // falls monotonically). Returns the exit rescaled to u = 1, with the scale and
+  // the relative error of e so far.
+  spiral_exit<Real> spiral_phase(taylor_integrator<Real, ss>& integ, const state& from, const Real& u_max) {
     using std::abs;
     using std::exp;
     using std::log;
     using std::pow;
     const auto& c = m_c;
-    std::vector<Real> x{Real(m_v / pow(m_u, c.beta)), Real(m_tau * pow(m_u, c.beta - 1)), m_D}, x1(3);
-    Real sigma = log(m_u);
-    const Real sigma_exit = log(Real(m_result.max_compression * m_switch_overlap));
+    std::vector<Real> x{Real(from.v / pow(from.u, c.beta)), Real(from.tau * pow(from.u, c.beta - 1)), from.D}, x1(3);
+    Real sigma = log(from.u);
+    const Real sigma_exit = log(Real(u_max * m_switch_overlap));
     const Real r_exit = -2 * c.gamma;
+    spiral_exit<Real> out;
     // Relative error of e = |r| u^c at the exit: an error dr in r at r shifts
     // the exit sigma by c r^2/den(r) dr/r, den = 1 + gamma beta r + c r^2
     // (the sensitivity of int r dr/den); large on the slow spiral near critical
     // damping. Errors before the spiral enter relative to the motion's size.
-    m_spiral_error = m_tol * static_cast<long>(m_steps) * (1 + sensitivity(x[ss::r]));
+    out.error = m_tol * static_cast<long>(m_steps) * (1 + sensitivity(x[ss::r]));
     const Real cap = -1 / epsilon<Real>();
     while (!(x[ss::r] <= r_exit && sigma <= sigma_exit)) {
       Real h = integ.expand(sigma, x, cap);
@@ -315,7 +413,7 @@ class taylor_impact_solver {
       count_step();
       sigma += h;
       x.swap(x1);
-      m_spiral_error += m_tol * (1 + sensitivity(x[ss::r])) + c.beta * epsilon<Real>() * abs(sigma);
+      out.error += m_tol * (1 + sensitivity(x[ss::r])) + c.beta * epsilon<Real>() * abs(sigma);
     }
     // Rounding in the slow drift 1 + gamma beta r + c r^2 acts like a relative
     // error eps in 1 - xi^2, xi = gamma beta/(2 sqrt c) the damping ratio, and
@@ -327,21 +425,18 @@ class taylor_impact_solver {
       const Real gap = (1 - xi) * (1 + xi);
       // NOTE: 2 pi, not pi: the drift's three terms (~1 each) and gamma beta
       // are each rounded, an absolute error of up to ~3 eps, not 1.
-      m_spiral_error += 2 * boost::math::constants::pi<Real>() * xi * epsilon<Real>() / (gap * sqrt(gap));
+      out.error += 2 * boost::math::constants::pi<Real>() * xi * epsilon<Real>() / (gap * sqrt(gap));
     }
     // Phase 3 runs on the problem scaled to u = 1 (u -> u/lambda, v -> v/lambda^c,
     // tau -> tau lambda^(c-1), D -> D/lambda^(2c), lambda = exp(sigma)), which
-    // the equation does not see; end_phase scales back. NOTE: unscaled, the
-    // series in s about s ~ u = 1e-44 have coefficients ~ 1e44^k, which overflow
-    // a double at order 7; and exp(sigma) itself underflows a double after ~745
-    // e-folds (gamma = 2 - 1e-8: e ~ 1e-13644 rounds to 0, as it should).
-    m_lambda_log = sigma;
-    m_tau_before = x[ss::theta] * exp((1 - c.beta) * sigma);
-    m_D_before = x[ss::D];
-    m_u = 1;
-    m_v = x[ss::r];
-    m_tau = 0;
-    m_D = 0;
+    // the equation does not see; unscale_spiral scales back. NOTE: unscaled, the
+    // series in s about a tiny u overflow, and exp(sigma) itself may underflow
+    // (docs/performance.md).
+    out.log_scale = sigma;
+    out.tau_before = x[ss::theta] * exp((1 - c.beta) * sigma);
+    out.D_before = x[ss::D];
+    out.scaled = state{Real(1), x[ss::r], Real(0), Real(0)};
+    return out;
   }
 
   Real sensitivity(const Real& r) const {
@@ -351,21 +446,24 @@ class taylor_impact_solver {
   }
 
   // ---- phase 3: back to u = 0 in sigma ----
-  void end_phase(taylor_integrator<Real, es>& integ) {
+  // Takes the state where phase 2 left (v < 0, u <= u_max/2), or the spiral's
+  // rescaled exit (then spiral_error is its error, and each step adds tol to it);
+  // integrates the endpoint system backwards to s = 0 (rational exponents) or to
+  // u_eps = gap(|v|/2) (u = exp(sigma)). Returns the state there (u = 0 or u_eps).
+  state way_out(taylor_integrator<Real, es>& integ, const state& from, Real* spiral_error) {
     using std::abs;
-    using std::exp;
     using std::log;
     using std::pow;
     const auto& c = m_c;
-    std::vector<Real> x{m_v, m_tau, m_D}, x1(3);
+    std::vector<Real> x{from.v, from.tau, from.D}, x1(3);
     Real sigma, target, u_eps = 0;
     if (c.use_root_variable) {
-      sigma = pow(m_u, Real(1) / Real(c.Q));
+      sigma = pow(from.u, Real(1) / Real(c.Q));
       target = 0;
     } else {
-      sigma = log(m_u);
-      u_eps = gap(Real(abs(m_v) / 2));
-      if (u_eps > m_u) u_eps = m_u;
+      sigma = log(from.u);
+      u_eps = gap(Real(abs(from.v) / 2));
+      if (u_eps > from.u) u_eps = from.u;
       target = log(u_eps);
     }
     while (sigma != target) {
@@ -385,51 +483,68 @@ class taylor_impact_solver {
         check_tries(tries, "restitution phase");
       }
       count_step();
-      if (m_in_spiral) m_spiral_error += m_tol;
+      if (spiral_error) *spiral_error += m_tol;
       sigma = h == distance ? target : Real(sigma + h);
       x.swap(x1);
-      if (!m_in_spiral) note_speed(x[es::v]);
+      if (!spiral_error) note_speed(x[es::v]);
     }
-    m_v = x[es::v], m_tau = x[es::tau], m_D = x[es::D];
-    if (!c.use_root_variable) {
-      // Close [0, u_eps] with the leading terms of the generalized series.
-      const Real u = u_eps, V = -m_v;
-      const Real u_beta = pow(u, c.beta);
-      m_v = m_v - c.g * u / m_v + c.gamma * u_beta + pow(u, c.alpha_plus_one) / (c.alpha_plus_one * m_v);
-      m_tau += u / V;
-      m_D += c.two_gamma * V * u_beta;
-    }
-    m_u = 0;
-    if (m_in_spiral) {
-      m_v *= exp(c.beta * m_lambda_log);
-      m_tau = m_tau_before + m_tau * exp((1 - c.beta) * m_lambda_log);
-      m_D = m_D_before + m_D * exp(2 * c.beta * m_lambda_log);
-      note_speed(m_v);
-    }
-    // Two values of e: e_v = -v(T_f) from the trajectory and e_D = sqrt(1 - D)
-    // from the energy identity. Their errors: e^2 from the trajectory is wrong by
-    // about the energy residual plus the local errors (tol per step relative to
-    // the energy scale, speed_scale^2); D has relative error tol per step.
-    // An error d in e^2 is an error d / (e + sqrt(d)) in e.
+    return state{u_eps, x[es::v], x[es::tau], x[es::D]};
+  }
+
+  // Phase 3, u = exp(sigma) only: takes the state at u = u_eps and returns the
+  // state at u = 0, from the leading terms of the generalized series (file comment).
+  state close_by_series(state s) const {
+    using std::pow;
+    const auto& c = m_c;
+    const Real u = s.u, V = -s.v;
+    const Real u_beta = pow(u, c.beta);
+    s.v = s.v - c.g * u / s.v + c.gamma * u_beta + pow(u, c.alpha_plus_one) / (c.alpha_plus_one * s.v);
+    s.tau += u / V;
+    s.D += c.two_gamma * V * u_beta;
+    s.u = 0;
+    return s;
+  }
+
+  // Phase 3, after the spiral: takes the state at u = 0 of the problem rescaled
+  // at the spiral's exit and returns it in the original units.
+  state unscale_spiral(state s, const spiral_exit<Real>& exit) {
+    using std::exp;
+    const auto& c = m_c;
+    s.v *= exp(c.beta * exit.log_scale);
+    s.tau = exit.tau_before + s.tau * exp((1 - c.beta) * exit.log_scale);
+    s.D = exit.D_before + s.D * exp(2 * c.beta * exit.log_scale);
+    note_speed(s.v);
+    return s;
+  }
+
+  // Phase 3, last: takes the state at u = 0 (original units) and the spiral's
+  // relative error of e (nullptr without a spiral); returns e, 1 - e, their
+  // error estimate, the energy residual, and which identity e came from.
+  // Two values of e: e_v = -v(T_f) from the trajectory and e_D = sqrt(1 - D)
+  // from the energy identity. Their errors: e^2 from the trajectory is wrong by
+  // about the energy residual plus the local errors (tol per step relative to
+  // the energy scale, speed_scale^2); D has relative error tol per step.
+  // An error d in e^2 is an error d / (e + sqrt(d)) in e.
+  restitution<Real> choose_e(const state& end, const Real* spiral_error) const {
+    using std::abs;
     using std::sqrt;
-    const Real e_v = -m_v;
-    m_result.outcome = impact_outcome::rebound;
-    m_result.contact_time = m_tau;
+    restitution<Real> out;
+    const Real e_v = -end.v;
     // NOTE: (1 - e)(1 + e) avoids the cancellation of 1 - e^2 for e near 0.
-    m_result.energy_residual = (1 - e_v) * (1 + e_v) - m_D;
+    out.energy_residual = (1 - e_v) * (1 + e_v) - end.D;
     const Real steps = Real(m_steps);
-    const Real d_v = abs(m_result.energy_residual) + steps * m_tol * m_speed_scale * m_speed_scale;
+    const Real d_v = abs(out.energy_residual) + steps * m_tol * m_speed_scale * m_speed_scale;
     Real err_v = d_v / (e_v + sqrt(d_v));
-    if (m_in_spiral) {
+    if (spiral_error) {
       // relative digits of a tiny e (see spiral_phase)
-      Real err_s = e_v * m_spiral_error;
+      Real err_s = e_v * *spiral_error;
       // underflowed to a subnormal or 0: relative digits are lost, absolute ones are not
       if (e_v < boost::math::tools::min_value<Real>()) err_s += boost::math::tools::min_value<Real>();
       if (err_s < err_v) err_v = err_s;
     }
-    const Real one_minus_D = 1 - m_D;
+    const Real one_minus_D = 1 - end.D;
     Real err_D = std::numeric_limits<Real>::infinity(), e_D = 0;
-    const Real d_D = steps * m_tol * m_D + epsilon<Real>();
+    const Real d_D = steps * m_tol * end.D + epsilon<Real>();
     if (one_minus_D > 0) {
       e_D = sqrt(one_minus_D);
       err_D = d_D / (e_D + sqrt(d_D));
@@ -438,125 +553,108 @@ class taylor_impact_solver {
     // e = 0 it is the square root of rounding noise, while e_v may still be right.
     if (err_D <= err_v && one_minus_D > d_D) {
       // 1 - e = D / (1 + e): full relative precision as gamma -> 0.
-      m_result.one_minus_e = m_D / (1 + e_D);
-      m_result.e = e_D > Real(1) / 2 ? Real(1 - m_result.one_minus_e) : e_D;
-      if (e_D <= Real(1) / 2) m_result.one_minus_e = 1 - e_D;
-      m_result.error_estimate = err_D;
+      out.source = e_source::dissipated_energy;
+      out.one_minus_e = end.D / (1 + e_D);
+      out.e = e_D > Real(1) / 2 ? Real(1 - out.one_minus_e) : e_D;
+      if (e_D <= Real(1) / 2) out.one_minus_e = 1 - e_D;
+      out.error_estimate = err_D;
     } else {
-      m_result.e = e_v;
-      m_result.one_minus_e = 1 - e_v;
-      m_result.error_estimate = err_v;
+      out.source = e_source::trajectory;
+      out.e = e_v;
+      out.one_minus_e = 1 - e_v;
+      out.error_estimate = err_v;
     }
+    return out;
   }
 
   // ---- sticking ----
-  void stick(const Real& time, bool turned = false) {
+  // The stick outcome where the bead stopped (`at`): e = 0, the contact time and
+  // stop overlap given. With check_energy (it turned at u_s > 0, 2E = 2P(u_s),
+  // P(u) = u^(alpha+1)/(alpha+1) - g u) the energy identity must hold to within a
+  // quarter of |P(u_s)|: reaching u = 0 instead would need an error that large.
+  void stick(impact_result<Real>& result, const state& at, const Real& contact_time, const Real& stop_overlap,
+             bool check_energy) const {
+    using std::abs;
     using std::pow;
-    m_result.outcome = impact_outcome::stick;
-    m_result.e = 0;
-    m_result.one_minus_e = 1;
-    m_result.contact_time = time;
-    // Where the bead stops separating: the turning point, or (creeping) the static equilibrium.
-    m_result.stop_overlap = turned ? m_u : Real(m_c.g > 0 ? equilibrium() : Real(0));
-    const Real two_E =
-        m_v * m_v + 2 * pow(m_u, m_c.alpha_plus_one) / m_c.alpha_plus_one - 2 * m_c.g * m_u;
-    m_result.energy_residual = 1 - two_E - m_D;
-    m_result.error_estimate = 0;
-    // The bead turned at u_s > 0 with 2E = 2P(u_s), P(u) = u^(alpha+1)/(alpha+1) - g u;
-    // reaching u = 0 instead would need an energy error comparable to |P(u_s)|.
+    result.outcome = impact_outcome::stick;
+    result.e = 0;
+    result.one_minus_e = 1;
+    result.contact_time = contact_time;
+    result.stop_overlap = stop_overlap;
+    const Real two_E = at.v * at.v + 2 * pow(at.u, m_c.alpha_plus_one) / m_c.alpha_plus_one - 2 * m_c.g * at.u;
+    result.energy_residual = 1 - two_E - at.D;
+    result.error_estimate = 0;
     // NOTE: g = 1e12 in double loses all of e^2 ~ 1 against g u ~ 1e16: then
     // the energy identity fails by O(1) and no outcome can be certified.
-    using std::abs;
-    const Real budget = abs(two_E - m_v * m_v) / 4;
-    if (turned && !(abs(m_result.energy_residual) < budget))
+    const Real budget = abs(two_E - at.v * at.v) / 4;
+    if (check_energy && !(abs(result.energy_residual) < budget))
       throw certification_error("solve_impact (taylor): the energy identity (6) fails by " +
-                                to_decimal_string(m_result.energy_residual, 3) +
+                                to_decimal_string(result.energy_residual, 3) +
                                 " where the bead stops: the working precision (" +
                                 std::to_string(decimal_digits<Real>()) + " digits) is too low for " + describe());
   }
 
-  // Phase 2 -> 3: the rest of the path keeps v <= v1/2 < 0 (see the file comment).
-  bool leaves_without_turning() const {
+  // g = 0: the barrier w = c gamma u^beta (file comment) proves creeps_to_origin;
+  // g > 0: creeps_to_equilibrium_from_above.
+  sticking_proof creeps_to_rest(const state& s) const {
     using std::pow;
-    if (!(m_v < 0) || m_u > m_result.max_compression * m_switch_overlap) return false;
-    const Real V = -m_v;
-    Real lhs = 2 * m_c.gamma * pow(m_u, m_c.beta) * V;
-    if (m_c.g > 0) lhs += 4 * m_c.g * m_u;
-    return lhs <= V * V;
-  }
-
-  // g = 0 barrier w = c gamma u^beta (file comment).
-  bool creeps_to_rest() {
-    using std::pow;
-    using std::sqrt;
     const auto& c = m_c;
-    if (c.g > 0) return creeps_to_equilibrium_from_above();
-    if (c.g < 0 || c.gamma == 0 || !(m_v < 0)) return false;
+    if (c.g > 0) return creeps_to_equilibrium_from_above(s);
+    if (c.g < 0 || c.gamma == 0 || !(s.v < 0)) return sticking_proof::none;
     const Real k = c.alpha_plus_one - 2 * c.beta;
-    if (k < 0) return false;
-    const Real damping = c.gamma * pow(m_u, c.beta);
-    const Real w = m_v + damping;
-    if (!(w > 0)) return false;
+    if (k < 0) return sticking_proof::none;
+    const Real damping = c.gamma * pow(s.u, c.beta);
+    const Real w = s.v + damping;
+    if (!(w > 0)) return sticking_proof::none;
     Real ratio = w / damping;
     if (ratio > Real(1) / 2) ratio = Real(1) / 2;
-    return pow(m_u, k) <= ratio * (1 - ratio) * c.gamma * c.gamma * c.beta;
+    return pow(s.u, k) <= ratio * (1 - ratio) * c.gamma * c.gamma * c.beta ? sticking_proof::creeps_to_origin
+                                                                              : sticking_proof::none;
   }
 
   // g > 0: the state is the equilibrium u_eq up to rounding. NOTE: near
   // critical damping a turn (v = 0) can come when the motion about u_eq is far
-  // below the rounding of u (linear law, gamma = 1.999, g = 1e-3 in double:
-  // |u - u_eq| ~ 1e-44 at the turn back); v then only decays or jitters at
-  // rounding level, and no event would ever be seen.
-  bool at_rest() {
+  // below the rounding of u (docs/performance.md); v then only decays or
+  // jitters at rounding level, and no event would ever be seen.
+  sticking_proof at_rest(const state& s) const {
     using std::abs;
     using std::pow;
     using std::sqrt;
-    if (!(m_c.g > 0)) return false;
-    const Real u_eq = equilibrium();
-    const Real du = 64 * epsilon<Real>() * u_eq;
-    if (!(abs(m_u - u_eq) <= du)) return false;
+    if (!(m_c.g > 0)) return sticking_proof::none;
+    const Real du = 64 * epsilon<Real>() * m_u_eq;
+    if (!(abs(s.u - m_u_eq) <= du)) return sticking_proof::none;
     // |v| against the speed of an oscillation of amplitude du: omega du, omega^2 = alpha u_eq^(alpha-1)
-    return abs(m_v) <= du * sqrt(m_c.alpha * pow(u_eq, m_c.alpha - 1));
+    return abs(s.v) <= du * sqrt(m_c.alpha * pow(m_u_eq, m_c.alpha - 1)) ? sticking_proof::at_rest
+                                                                         : sticking_proof::none;
   }
 
   // g > 0, u > u_eq, v < 0: trapped in the sector -kappa (u - u_eq) <= v < 0.
-  bool creeps_to_equilibrium_from_above() {
+  sticking_proof creeps_to_equilibrium_from_above(const state& s) const {
     using std::pow;
     using std::sqrt;
     const auto& c = m_c;
-    const Real u_eq = equilibrium();
-    if (!(m_u > u_eq) || !(m_v < 0)) return false;
-    const Real Gamma = c.gamma_beta * pow(u_eq, c.beta - 1);
-    const Real A = c.alpha * pow(m_u, c.alpha - 1);
+    if (!(s.u > m_u_eq) || !(s.v < 0)) return sticking_proof::none;
+    const Real Gamma = c.gamma_beta * pow(m_u_eq, c.beta - 1);
+    const Real A = c.alpha * pow(s.u, c.alpha - 1);
     const Real disc = Gamma * Gamma - 4 * A;
-    if (disc < 0) return false;
+    if (disc < 0) return sticking_proof::none;
     const Real kappa = (Gamma + sqrt(disc)) / 2;
-    return -m_v <= kappa * (m_u - u_eq);
+    return -s.v <= kappa * (s.u - m_u_eq) ? sticking_proof::creeps_to_equilibrium : sticking_proof::none;
   }
 
   // g > 0, u < u_eq, v > 0: trapped in 0 < v <= kappa (u_eq - u); u creeps up to u_eq.
-  bool creeps_to_equilibrium_from_below() {
+  sticking_proof creeps_to_equilibrium_from_below(const state& s) const {
     using std::pow;
     using std::sqrt;
     const auto& c = m_c;
-    if (!(c.g > 0) || c.gamma == 0) return false;
-    const Real u_eq = equilibrium();
-    if (!(m_u < u_eq) || !(m_v > 0)) return false;
-    const Real Gamma = c.gamma_beta * pow(m_u, c.beta - 1);
-    const Real A = c.alpha * pow(u_eq, c.alpha - 1);
+    if (!(c.g > 0) || c.gamma == 0) return sticking_proof::none;
+    if (!(s.u < m_u_eq) || !(s.v > 0)) return sticking_proof::none;
+    const Real Gamma = c.gamma_beta * pow(s.u, c.beta - 1);
+    const Real A = c.alpha * pow(m_u_eq, c.alpha - 1);
     const Real disc = Gamma * Gamma - 4 * A;
-    if (disc < 0) return false;
+    if (disc < 0) return sticking_proof::none;
     const Real kappa = (Gamma + sqrt(disc)) / 2;
-    return m_v <= kappa * (u_eq - m_u);
-  }
-
-  const Real& equilibrium() {
-    using std::pow;
-    if (!m_have_u_eq) {
-      m_u_eq = pow(m_c.g, 1 / m_c.alpha);
-      m_have_u_eq = true;
-    }
-    return m_u_eq;
+    return s.v <= kappa * (m_u_eq - s.u) ? sticking_proof::creeps_to_equilibrium : sticking_proof::none;
   }
 
   // omega^2 = alpha u^(alpha-1), the stiffness at overlap u.
@@ -600,12 +698,6 @@ class taylor_impact_solver {
     return u;
   }
 
-  void set_state(const std::vector<Real>& y) {
-    m_u = y[ts::u];
-    m_v = y[ts::v];
-    m_D = y[ts::D];
-  }
-
   void note_speed(const Real& v) {
     using std::abs;
     if (abs(v) > m_speed_scale) m_speed_scale = abs(v);
@@ -633,29 +725,26 @@ class taylor_impact_solver {
                               describe());
   }
 
-  impact_result<Real> finish() {
-    m_result.steps = m_steps;
-    return m_result;
+  impact_result<Real> finish(impact_result<Real>& result) const {
+    result.steps = m_steps;
+    return result;
   }
 
+  // Fixed for the whole solve:
   const contact_law& m_law;
   const solve_options<Real>& m_options;
-  impact_constants<Real> m_c;
+  const impact_constants<Real> m_c;
   Real m_tol;
-  Real m_tau = 0, m_u = 0, m_v = 1, m_D = 0;
-  Real m_u_eq = 0;
-  bool m_have_u_eq = false;
-  Real m_speed_scale = 1;
-  Real m_spiral_error = 0;
-  Real m_lambda_log = 0, m_tau_before = 0, m_D_before = 0;  // spiral exit (scaling of phase 3)
-  bool m_spiral = false, m_in_spiral = false;
+  Real m_u_eq = 0;  // the static equilibrium g^(1/alpha) for g > 0, where a creeping bead rests; else 0
   Real m_u_growth = std::numeric_limits<Real>::infinity();  // 4^(1/(alpha-1)): omega^2 grows at most 4-fold
+  bool m_spiral_possible = false;  // g = 0, alpha + 1 = 2 beta, underdamped: phase 2b may follow phase 2
   // Phase switches: leave phase 1 when v < m_switch_speed * peak v; enter phase 3
   // only once u < m_switch_overlap * u_max (away from the turning point, which
   // limits the sigma steps, as u = 0 limits the tau steps).
-  Real m_switch_speed = Real(4) / 5, m_switch_overlap = Real(1) / 2;
-  std::size_t m_steps = 0;
-  impact_result<Real> m_result;
+  const Real m_switch_speed = Real(4) / 5, m_switch_overlap = Real(1) / 2;
+  // Accumulated by every phase, one meaning throughout:
+  std::size_t m_steps = 0;  // steps taken so far (budget: m_options.max_steps)
+  Real m_speed_scale = 1;   // largest |v| seen so far in original units: the scale of the local errors
 };
 
 }  // namespace detail

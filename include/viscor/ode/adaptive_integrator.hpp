@@ -39,6 +39,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <type_traits>
 #include <vector>
 
 namespace viscor {
@@ -52,18 +53,6 @@ struct gbs_work {
   using type = Real;
   static int guard_digits() { return 0; }
 };
-template <>
-struct gbs_work<double> {
-  using type = long double;
-  static int guard_digits() { return 3; }
-};
-#if VISCOR_HAS_FLOAT128
-template <>
-struct gbs_work<long double> {
-  using type = quad;
-  static int guard_digits() { return 15; }
-};
-#endif
 #if VISCOR_HAS_MPFR
 // NOTE: MPFR's cost goes by 64-bit limbs, not by bits, so the work precision is
 // rounded up to whole limbs: those guard digits are free. (mpfr_50's 57 digits
@@ -86,17 +75,56 @@ int mpfr_guard_digits() {
   const auto d = static_cast<unsigned>(decimal_digits<Real>());
   return static_cast<int>(mpfr_limb_filled_digits(d + mpfr_min_guard_digits(d)) - d);
 }
+#endif
+
+/// The GBS work type of a built-in type Real, chosen by width (never by name): the
+/// first of long double, float128 that carries at least MinGuard decimal digits
+/// more than Real, else mpfr_real at decimal_digits<Real>() + MinGuard + d/8 digits
+/// filled to the limb. So where long double is double (MSVC) or binary128 (aarch64
+/// Linux), the work type is still wider than Real by the intended margin.
+template <class Real, int MinGuard>
+struct gbs_work_by_width {
+  static constexpr int working = fixed_decimal_digits<Real>();
+  static constexpr bool long_double_wide = fixed_decimal_digits<long double>() >= working + MinGuard;
 #if VISCOR_HAS_FLOAT128
-template <>
-struct gbs_work<quad> {
-  using type = mpfr_real;
-  // quad keeps its former 10 + 33/8 = 14 guard digits (then filled to the limb).
+  static constexpr bool quad_wide = fixed_decimal_digits<quad>() >= working + MinGuard;
+  using quad_or_void = quad;
+#else
+  static constexpr bool quad_wide = false;
+  using quad_or_void = void;
+#endif
+#if VISCOR_HAS_MPFR
+  using mpfr_or_void = mpfr_real;
+#else
+  using mpfr_or_void = void;
+#endif
+  using type = std::conditional_t<long_double_wide, long double, std::conditional_t<quad_wide, quad_or_void, mpfr_or_void>>;
+  static_assert(!std::is_void_v<type>, "no scalar type wider than Real by MinGuard digits for GBS (build with MPFR)");
   static int guard_digits() {
-    const unsigned d = static_cast<unsigned>(decimal_digits<quad>());
-    return static_cast<int>(mpfr_limb_filled_digits(d + 10 + d / 8) - d);
+#if VISCOR_HAS_MPFR
+    if constexpr (std::is_same_v<type, mpfr_real>) {
+      const auto d = static_cast<unsigned>(working);
+      return static_cast<int>(mpfr_limb_filled_digits(d + MinGuard + d / 8) - d);
+    } else
+#endif
+    {
+      static_assert(fixed_decimal_digits<type>() - working >= MinGuard);
+      return fixed_decimal_digits<type>() - working;
+    }
   }
 };
+/// double: 3 guard digits (x87 long double: 18 - 15).
+template <>
+struct gbs_work<double> : gbs_work_by_width<double, 3> {};
+/// long double: 10 or more (float128 over x87: 33 - 18 = 15).
+template <>
+struct gbs_work<long double> : gbs_work_by_width<long double, 10> {};
+#if VISCOR_HAS_FLOAT128
+/// float128: mpfr_real at 33 + 10 + 33/8 digits filled to the limb (57).
+template <>
+struct gbs_work<quad> : gbs_work_by_width<quad, 10> {};
 #endif
+#if VISCOR_HAS_MPFR
 /// Fixed-precision mpfr types integrate in a wider fixed type with limbs on the
 /// stack: no allocation and no thread-default-precision look-up per operation.
 /// mpfr_50: 57 digits (3 limbs, guard 7); mpfr_100: 115 digits (6 limbs, guard 15).
@@ -106,6 +134,7 @@ struct gbs_work<boost::multiprecision::number<boost::multiprecision::mpfr_float_
   using type = boost::multiprecision::number<
       boost::multiprecision::mpfr_float_backend<digits, boost::multiprecision::allocate_stack>>;
   static int guard_digits() { return static_cast<int>(digits - D); }
+  static_assert(digits >= D + mpfr_min_guard_digits(D), "the GBS work type must be wider than mpfr at D digits");
   // NOTE: a wider type (the former 10 + D/8 guard digits, filled: mpfr_50 76 digits,
   // mpfr_100 134) for when the tolerance asks for more digits than `type` can
   // resolve: under a large load g it shrinks by 1 + |g| (solve_impact_adaptive).

@@ -11,12 +11,8 @@
 // that must keep relative precision, 0 to leave a component out. The order is
 // fixed per integrator, so the series buffers are allocated once. Dense output and event location use the step
 // polynomial itself: an event is the root of a component of it, found by TOMS
-// 748 at working precision (detail/root_finding.hpp).
-//
-// A System provides
-//   std::size_t size() const;                   number of components
-//   Real step_scale(std::size_t i, const Real& x0) const;   s_i (0: not used)
-//   void jet(const Real& t0, taylor_jet<Real>& x); fills x[i][1..order] from x[i][0]
+// 748 at working precision (detail/root_finding.hpp). What a System must provide
+// is the concept taylor_system below.
 #pragma once
 
 #include <viscor/core/detail/root_finding.hpp>
@@ -27,6 +23,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <concepts>
 #include <cstddef>
 #include <limits>
 #include <string>
@@ -69,7 +66,28 @@ inline std::size_t taylor_order<long double>(const long double& tolerance) {
   return p < 2 ? 2 : static_cast<std::size_t>(p);
 }
 
-template <class Real, class System>
+/// What taylor_integrator needs of a System of ODEs in Real:
+/// size() components; step_scale(i, x0) = s_i, the scale of component i at the
+/// expansion point x0 for the step estimate (0: left out); jet(t0, x) fills the
+/// Taylor coefficients x[i][1..order] at t0 from x[i][0].
+template <class System, class Real>
+concept taylor_system = requires(System& system, const System& csystem, std::size_t i, const Real& t0,
+                                 const Real& x0, taylor_jet<Real>& x) {
+  { csystem.size() } -> std::convertible_to<std::size_t>;
+  { csystem.step_scale(i, x0) } -> std::convertible_to<Real>;
+  system.jet(t0, x);
+};
+
+/// A taylor_system whose last jet computed the orders from tail_start() on in a
+/// lower precision, bounded by |x_i[k] h^k| <= exp(tail_log_bound()) s_i
+/// (the integrator caps its step to keep that bound: limit_tail).
+template <class System>
+concept taylor_system_with_tail = requires(const System& system) {
+  { system.tail_start() } -> std::convertible_to<std::size_t>;
+  { system.tail_log_bound() } -> std::convertible_to<double>;
+};
+
+template <class Real, taylor_system<Real> System>
 class taylor_integrator {
  public:
   taylor_integrator(System& system, const Real& tolerance)
@@ -97,7 +115,7 @@ class taylor_integrator {
 
   /// The Jorba-Zou step of the current jet (see the file comment), capped at |h_max|.
   /// NOTE: computed in double (logarithms of the coefficients): a step needs a
-  /// few digits, and log/exp at the working precision cost 10% of a float128 run.
+  /// few digits, and log/exp at the working precision are costly (docs/performance.md).
   Real step_size(const Real& h_max) const {
     using std::abs;
     using boost::math::isfinite;
@@ -128,7 +146,7 @@ class taylor_integrator {
       const Real jz = power_of_e(m_log_safety - log_inv_rho);
       if (isfinite(jz) && jz < h) h = jz;
     }
-    if constexpr (requires(const System& sys) { sys.tail_start(); }) limit_tail(h);
+    if constexpr (taylor_system_with_tail<System>) limit_tail(h);
     if (h_max < 0) h = -h;
     limit_cancellation(h);
     return h;
@@ -167,10 +185,9 @@ class taylor_integrator {
   /// factor m_cancellation: sum_k |x_i[k] h^k| <= K max(s_i, |x_i(t0 + h)|).
   /// NOTE: the Horner sum's rounding error is ~eps sum |x_i[k] h^k|. For entire
   /// solutions (fast decaying modes, e^(-lambda t)) the Jorba-Zou radius grows
-  /// like p/e with the order, and the sum with it like e^(lambda h): at 300
-  /// digits (p = 346) 7 digits were lost per step without this cap. The sums
-  /// are formed in double from the logarithms of the terms (a factor 8 needs
-  /// no more).
+  /// like p/e with the order, and the sum with it like e^(lambda h), so that
+  /// digits are lost at high orders (docs/performance.md). The sums are formed
+  /// in double from the logarithms of the terms (a factor 8 needs no more).
   void limit_cancellation(Real& h) const {
     // NOTE: the worst case, an entire series (x^k/k! at the Jorba-Zou step,
     // x = p/e^3), sums to e^(p/e^3): below the factor K = 8 up to p = 41

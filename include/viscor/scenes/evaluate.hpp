@@ -1,21 +1,28 @@
-// Accuracy-driven evaluation (issue 7): e at (law, gamma, g) with an error bound
-// <= a requested tolerance, by the cheapest method that can guarantee it.
+// Accuracy-driven evaluation (issue 7): e at (law, gamma, g) with an empirical
+// error bound <= a requested tolerance, by the cheapest method whose bound meets it.
 //
+// The bound is EMPIRICAL, not a proof: each method's bound is a measured or
+// estimated error times a safety factor, and the factors were chosen from (and are
+// checked by) comparisons with independent references (tests/evaluate_test.cpp on
+// a sample in the default suite, tests/evaluate_slow_test.cpp on 500 points).
 // Methods, tried in order of cost; the first whose bound meets the tolerance wins:
 //   1. a double-precision approximation (eqs. 22, 23, 25, then Prop. 2 with
 //      Chebyshev-Beta, then quadrature coefficients) -- only inside a cell of an
-//      error map (error_map.hpp) for this law, with the cell's bound. Outside the
-//      mapped region, or without a map, approximations are never used.
-//   2. an exact closed form (exact_cor: gamma = 0, the linear law, Hunt-Crossley
-//      form and Tsuji at g = 0), evaluated at two precisions d and d + 10: the
-//      formula is exact, so their difference bounds the rounding of the first.
+//      error map (error_map.hpp) for this law. Bound: the cell's, 4 x the largest
+//      error seen over the certified table rows in the cell (+ 1e-14), i.e. a
+//      sampled maximum, not a maximum over the cell.
+//   2. an exact closed form (closed_form_for decides which), evaluated at two
+//      precisions d and d + 10. Bound: 4 x their difference + 8 epsilon: the formula
+//      is exact, so the difference measures the rounding of the first.
 //   3. the Taylor solve (solve_impact) at d digits, d = max(digits of Real,
 //      -log10(tolerance) + 3), in the cheapest type that carries them (double
-//      first), with bound 10 x its error estimate (detail/estimate_safety.hpp);
-//      a stick verdict gets the bound sqrt(2 x energy uncertainty): a bead that
+//      first). Bound: 10 x its error estimate (detail/estimate_safety.hpp), the
+//      estimate being a heuristic (steps x tolerance x energy scale + the energy
+//      residual); a stick verdict gets 10 sqrt(2 x energy uncertainty): a bead that
 //      wrongly seems to stick can have rebounded only with that little energy.
-//   4. below 1e-15, certify (certification.hpp) at d digits instead of 3: the
-//      bound comes from the certified digits, relative and absolute.
+//   4. below 1e-15, certify (certification.hpp) at d digits instead of 3. Bound:
+//      10^(1 - certified digits), relative and absolute; certified digits are an
+//      agreement of independent methods, not an enclosure.
 // The first Taylor solve steps at tolerance/1000 (cheaper); if its bound misses,
 // the same digits at full step accuracy; then d grows by the shortfall plus 4
 // digits and 3 or 4 is repeated (5 solves in all); then certification_error.
@@ -25,6 +32,9 @@
 // stays meaningful as gamma -> 0 (one_minus_e is computed without cancellation).
 // For an approximation or an estimate with absolute bound B at value e, the
 // relative bound is B / (1 - e - B).
+// Compatibility: evaluation::empirical_bound was called error_bound, and the scene
+// outputs' column error_bound (error_bound_relative) is now empirical_bound
+// (empirical_bound_relative); the values are unchanged.
 //
 // Inputs are used exactly: solves run in a type at least as wide as Real.
 // Results are rounded to Real (the bound includes that rounding), so Real must
@@ -94,7 +104,9 @@ template <class Real>
 struct evaluation {
   Real e = 1, one_minus_e = 0;
   impact_outcome outcome = impact_outcome::rebound;
-  Real error_bound = 0;  ///< absolute on e, or relative on 1 - e when `relative`
+  /// Empirical bound on the error (see the header comment for how each method
+  /// obtains it): absolute on e, or relative on 1 - e when `relative`. Formerly error_bound.
+  Real empirical_bound = 0;
   bool relative = false;
   evaluation_method method = evaluation_method::taylor;
   int digits = 0;  ///< working decimal digits of the method (15 for the double approximations)
@@ -294,7 +306,7 @@ class evaluator {
   const contact_law& law() const noexcept { return m_law; }
   const evaluate_options& options() const noexcept { return m_options; }
 
-  /// e at (gamma, g) with error_bound <= tolerance (absolute, or relative on 1 - e).
+  /// e at (gamma, g) with empirical_bound <= tolerance (absolute, or relative on 1 - e).
   evaluation<Real> operator()(const Real& gamma, const Real& g, const Real& tolerance) const {
     const auto start = std::chrono::steady_clock::now();
     impact_parameters<Real>{m_law, gamma, g}.validate();
@@ -314,8 +326,8 @@ class evaluator {
   evaluation<Real> compute(const Real& gamma, const Real& g, const Real& tolerance) const {
     if (auto a = by_approximation(gamma, g, tolerance)) return *a;
     const std::string tol_text = to_decimal_string(tolerance);
-    // Closed forms exist only on special lines; exact_cor says which.
-    if (detail::is_rational(m_law.alpha, 1, 1) || gamma == 0 || g == 0) {
+    // Closed forms exist only on special lines; closed_form_for says which.
+    if (closed_form_exists(m_law, gamma == 0, g == 0)) {
       const int d = detail::first_digits(tolerance, 4);
       const detail::evaluation_text t = with_working_precision(d, [&]<class W>() {
         if constexpr (detail::can_widen<W, Real>()) {
@@ -326,7 +338,7 @@ class evaluator {
       });
       if (t.ok && (!m_options.need_contact_time || !t.contact_time.empty())) {
         const evaluation<Real> r = from_text(t, 0);
-        if (r.error_bound <= tolerance) return r;
+        if (r.empirical_bound <= tolerance) return r;
       }
     }
     return by_solving(gamma, g, tolerance, tol_text);
@@ -351,7 +363,7 @@ class evaluator {
       evaluation<Real> r;
       r.e = e, r.one_minus_e = one_minus_e;
       r.outcome = stick ? impact_outcome::stick : impact_outcome::rebound;
-      r.error_bound = bound;
+      r.empirical_bound = bound;
       r.method = static_cast<evaluation_method>(k);  // same order as all_approximations
       r.digits = decimal_digits<double>();
       return r;
@@ -368,10 +380,9 @@ class evaluator {
     // so 3 digits beyond the tolerance suffice for the solve; certify reports
     // agreement minus a 2-digit margin, so 5 for it.
     int d = detail::first_digits(tolerance, certified ? 5 : 3);
-    // NOTE: the first Taylor attempt steps at tolerance/1000, which halves the cost
-    // in double (28 steps of order 9 instead of 19 at 1e-4); its estimate is then
-    // ~10x the step tolerance and >= 700x the true error (measured), so 10 x the
-    // estimate still meets the tolerance. Any later attempt steps at full precision.
+    // NOTE: the first Taylor attempt steps at tolerance/1000, which is cheaper (lower
+    // order) while 10 x its estimate still meets the tolerance (measured,
+    // docs/performance.md, "scenes/evaluate.hpp"). Any later attempt steps at full precision.
     bool loose = !certified && m_options.loose_first_attempt;
     std::string worst_bound;
     for (int attempt = 1; attempt <= m_options.max_attempts; ++attempt) {
@@ -383,7 +394,7 @@ class evaluator {
           if (t.bound <= tolerance) {
             evaluation<Real> r;
             r.e = t.solve.e, r.one_minus_e = t.solve.one_minus_e, r.outcome = t.solve.outcome;
-            r.error_bound = t.bound, r.method = evaluation_method::taylor, r.digits = decimal_digits<Real>();
+            r.empirical_bound = t.bound, r.method = evaluation_method::taylor, r.digits = decimal_digits<Real>();
             r.contact_time = t.solve.contact_time, r.attempts = attempt;
             return r;
           }
@@ -410,12 +421,12 @@ class evaluator {
       std::optional<evaluation<Real>> r;
       if (t.bound != "inf") {
         r = from_text(t, attempt);
-        if (r->error_bound <= tolerance) return *r;
+        if (r->empirical_bound <= tolerance) return *r;
       }
       if (loose) {
         loose = false;  // the same precision at full step accuracy first
       } else if (r) {
-        d += static_cast<int>(Real(ceil(log10(r->error_bound / tolerance)))) + 4;
+        d += static_cast<int>(Real(ceil(log10(r->empirical_bound / tolerance)))) + 4;
       } else {
         d += d / 2 + 4;
       }
@@ -436,8 +447,8 @@ class evaluator {
     r.method = t.method;
     r.digits = t.digits;
     r.attempts = attempts;
-    r.error_bound = parse_real<Real>(t.bound, "bound");
-    if (t.digits > decimal_digits<Real>()) r.error_bound += epsilon<Real>();
+    r.empirical_bound = parse_real<Real>(t.bound, "bound");
+    if (t.digits > decimal_digits<Real>()) r.empirical_bound += epsilon<Real>();
     if (!t.contact_time.empty()) {
       if (t.contact_time == "inf") r.contact_time = std::numeric_limits<Real>::infinity();
       else r.contact_time = parse_real<Real>(t.contact_time, "contact_time");

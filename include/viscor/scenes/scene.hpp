@@ -148,21 +148,21 @@ resolved_scene<Real> resolve_scene(const scene_description& d) {
   const bool direct = d.mass || d.stiffness;
   const bool material = d.density || d.radius || d.youngs_modulus || d.poisson_ratio;
   if (direct == material)
-    throw invalid_parameter(direct ? "scene: give the bead either as bead.mass and bead.stiffness or as "
+    throw invalid_parameter(direct ? "scene: give the bead either as bead.m and bead.k or as "
                                      "bead.density, radius, youngs_modulus and poisson_ratio, not both"
-                                   : "scene: missing field bead (bead.mass and bead.stiffness, or bead.density, "
+                                   : "scene: missing field bead (bead.m and bead.k, or bead.density, "
                                      "radius, youngs_modulus and poisson_ratio)");
   const bool wall = d.wall_youngs_modulus || d.wall_poisson_ratio;
   if (direct) {
-    if (wall) throw invalid_parameter("scene: a wall material needs the bead as a material, not bead.stiffness");
-    s.mass = scene_number<Real>(d.mass, "bead.mass");
-    s.stiffness = scene_number<Real>(d.stiffness, "bead.stiffness");
-    require_positive(s.mass, "bead.mass");
-    require_positive(s.stiffness, "bead.stiffness");
+    if (wall) throw invalid_parameter("scene: a wall material needs the bead as a material, not bead.k");
+    s.mass = scene_number<Real>(d.mass, "bead.m");
+    s.stiffness = scene_number<Real>(d.stiffness, "bead.k");
+    require_positive(s.mass, "bead.m");
+    require_positive(s.stiffness, "bead.k");
   } else {
     if (!(d.law.alpha == exponent::rational(3, 2)))
       throw invalid_parameter("scene: a Hertz stiffness from bead.youngs_modulus holds only for alpha = 3/2, the law "
-                              "has alpha = " + d.law.alpha.to_string() + "; give bead.stiffness instead");
+                              "has alpha = " + d.law.alpha.to_string() + "; give bead.k instead");
     const Real density = scene_number<Real>(d.density, "bead.density");
     const Real radius = scene_number<Real>(d.radius, "bead.radius");
     require_positive(density, "bead.density");
@@ -209,7 +209,7 @@ resolved_scene<Real> resolve_scene(const scene_description& d) {
   if (d.gamma0.has_value() == d.measured_e.has_value())
     throw invalid_parameter(d.gamma0 ? "scene: give damping.gamma0 or damping.measured_e, not both"
                                      : "scene: missing field damping (damping.gamma0, or damping.measured_e with "
-                                       "damping.speed and damping.gravity)");
+                                       "damping.v0 and damping.gravity)");
   if (d.gamma0) {
     s.gamma0 = parse_real<Real>(*d.gamma0, "damping.gamma0");
     require_non_negative(s.gamma0, "damping.gamma0");
@@ -222,15 +222,15 @@ resolved_scene<Real> resolve_scene(const scene_description& d) {
     const std::string stiffness = to_decimal_string(s.stiffness, roundtrip_digits<Real>() + 2);
     s.calibration = with_working_precision(digits, [&]<class C>() {
       const C e = parse_real<C>(*d.measured_e, "damping.measured_e");
-      const C speed = scene_number<C>(d.measured_speed, "damping.speed");
-      require_positive(speed, "damping.speed");
+      const C speed = scene_number<C>(d.measured_speed, "damping.v0");
+      require_positive(speed, "damping.v0");
       const C grav = scene_number<C>(d.measured_gravity, "damping.gravity");
       const C f = d.measured_force ? parse_real<C>(*d.measured_force, "damping.force") : C(0);
       calibration_options<C> options;
       options.tolerance = detail::default_calibration_tolerance<C>();  // <= tolerance / 10 by the choice of C
       try {
-        const physical_calibration<C> c = calibrate_gamma0(s.law, parse_real<C>(mass, "bead.mass"),
-                                                           parse_real<C>(stiffness, "bead.stiffness"), speed, grav, f,
+        const physical_calibration<C> c = calibrate_gamma0(s.law, parse_real<C>(mass, "bead.m"),
+                                                           parse_real<C>(stiffness, "bead.k"), speed, grav, f,
                                                            e, options);
         return scene_calibration{to_decimal_string(c.gamma0), to_decimal_string(c.scaled.gamma),
                                  to_decimal_string(c.scaled.g), to_decimal_string(c.scaled.e_error, 3),

@@ -4,7 +4,7 @@
 // |e_approx - e_ref| is kept per group (table, law, g, gamma range).
 //
 // Groups, by table (the file name decides, see grouping_of):
-//   cor_report_*   the report's ranges (TABLES.md): gamma_max = min(0.1, 1.1 gamma_c(g)),
+//   cor_report_*   the report's ranges (docs/report-notes.md): gamma_max = min(0.1, 1.1 gamma_c(g)),
 //                  gamma_c of eq. (24) (infinite at g = 0); small gamma < 0.2 gamma_max,
 //                  medium 0.2 gamma_max <= gamma <= 0.92 gamma_max, large 0.92 gamma_max
 //                  < gamma <= gamma_max, and "beyond" for the rows past gamma_max.
@@ -79,7 +79,7 @@ struct error_group {
 
 namespace detail {
 
-/// The report's gamma_max = min(0.1, 1.1 gamma_c(g)) (TABLES.md).
+/// The report's gamma_max = min(0.1, 1.1 gamma_c(g)) (docs/report-notes.md).
 template <class Real>
 Real report_gamma_max(const contact_law& law, const Real& g) {
   const Real cap = parse_real<Real>("0.1", "gamma_max");

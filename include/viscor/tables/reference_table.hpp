@@ -181,7 +181,7 @@ class row_checker {
   exponent exponent_field(std::size_t c) const {
     try {
       const exponent x = exponent::parse(at(c), m_columns[c]);
-      if (!(x.approximate() >= 1)) fail(c, "a contact-law exponent must be >= 1");
+      if (!x.at_least_one()) fail(c, "a contact-law exponent must be >= 1");
       return x;
     } catch (const parse_error&) {
       throw;

@@ -7,8 +7,11 @@
 //   1. viscor::certify (include/viscor/certify/certification.hpp): Taylor and adaptive
 //      solves at two precisions; certified digits = their agreement minus a margin.
 //   2. viscor::exact_cor: a closed form (linear law at any g; gamma = 0; beta =
-//      alpha + 1 and Tsuji at g = 0) evaluated at the working precision; its
-//      certified digits are the working digits minus 2.
+//      alpha + 1 and Tsuji at g = 0; closed_form_for decides) evaluated at the
+//      working precision; its digits are those on which e, 1 - e, T_f and u_max
+//      agree with the same closed form at 10 more digits (check_closed_form),
+//      minus 1 (at most the working digits - 2), since a formula can lose digits
+//      to its conditioning (the linear law about log10(g) at large g).
 // A point with neither is an error: no row is ever written without a certificate.
 #pragma once
 
@@ -51,15 +54,6 @@ struct point_result {
   row_source source = row_source::exact;
 };
 
-/// True if viscor::exact_cor has a closed form at (law, gamma, g); mirrors its
-/// dispatch (checked against it in reference_table_test).
-inline bool closed_form_exists(const contact_law& law, bool gamma_is_zero, bool g_is_zero) {
-  if (detail::is_rational(law.alpha, 1, 1) && detail::is_rational(law.beta, 1, 1)) return true;
-  if (gamma_is_zero) return true;
-  return g_is_zero && (detail::is_alpha_plus_one(law) ||
-                       (detail::is_rational(law.alpha, 3, 2) && detail::is_rational(law.beta, 5, 4)));
-}
-
 /// Throws invalid_parameter (before any work) if `method` cannot compute this point.
 inline void require_computable(const contact_law& law, bool gamma_is_zero, bool g_is_zero, row_method method,
                                const std::string& what) {
@@ -72,7 +66,8 @@ inline void require_computable(const contact_law& law, bool gamma_is_zero, bool 
 namespace detail {
 
 template <class Real>
-point_result<Real> exact_point(const contact_law& law, const Real& gamma, const Real& g, int working_digits) {
+point_result<Real> exact_point(const contact_law& law, const Real& gamma, const Real& g, int working_digits,
+                               const decimal_inputs& inputs) {
   const std::optional<exact_result<Real>> x = exact_cor(law, gamma, g);
   if (!x)
     throw invalid_parameter("no closed form exists for " + law.describe() + " at gamma = " +
@@ -81,9 +76,13 @@ point_result<Real> exact_point(const contact_law& law, const Real& gamma, const 
   r.outcome = x->outcome;
   r.e = x->e, r.one_minus_e = x->one_minus_e;
   r.contact_time = x->contact_time, r.max_compression = x->max_compression;
-  // NOTE: a closed form evaluated at working precision: allow 2 digits for the
-  // rounding of the inputs and of the evaluation.
-  r.digits = std::min(working_digits, decimal_digits<Real>()) - 2;
+  // The digits each quantity has (a second evaluation at more digits), less one for
+  // rounding the row to them, and never more than the working digits - 2 (the
+  // rounding of the inputs and of the evaluation).
+  const int cap = std::min(working_digits, decimal_digits<Real>());
+  const closed_form_digits checked = check_closed_form(law, gamma, g, *x, cap, inputs);
+  r.outcome_certified = checked.outcome_agrees;
+  r.digits = std::max(0, std::min(checked.least() - 1, cap - 2));
   r.source = row_source::exact;
   return r;
 }
@@ -107,14 +106,16 @@ point_result<Real> certified_point(const contact_law& law, const Real& gamma, co
 /// The certified result at (law, gamma, g) in the working type Real, by the
 /// method of `settings` (see the header comment). Throws invalid_parameter for
 /// a point the method cannot certify.
+/// `inputs`: the decimal texts gamma and g were rounded from (a table row's), so
+/// that a closed-form row's digits account for that rounding too.
 template <class Real>
 point_result<Real> evaluate_point(const contact_law& law, const Real& gamma, const Real& g,
-                                  const table_settings& settings) {
+                                  const table_settings& settings, const decimal_inputs& inputs = std::nullopt) {
   impact_parameters<Real>{law, gamma, g}.validate();
   require_computable(law, gamma == 0, g == 0, settings.method,
                      "point gamma = " + to_decimal_string(gamma) + ", g = " + to_decimal_string(g));
   if (settings.method != row_method::exact) return detail::certified_point(law, gamma, g);
-  return detail::exact_point(law, gamma, g, settings.digits);
+  return detail::exact_point(law, gamma, g, settings.digits, inputs);
 }
 
 /// x rounded to `digits` significant digits: "0" for zero, "inf" for infinity.
@@ -159,7 +160,7 @@ table_row make_row(const grid_point& p, const point_result<Real>& r) {
 inline table_row compute_row(const grid_point& p, const table_settings& settings) {
   return with_working_precision(settings.digits, [&]<class Real>() -> table_row {
     const Real gamma = parse_real<Real>(p.gamma, "gamma"), g = parse_real<Real>(p.g, "g");
-    const point_result<Real> r = evaluate_point(p.law, gamma, g, settings);
+    const point_result<Real> r = evaluate_point(p.law, gamma, g, settings, decimal_inputs{{p.gamma, p.g}});
     const std::string where = "row " + std::to_string(p.index) + " (" + p.law.describe() + ", gamma = " + p.gamma +
                               ", g = " + p.g + ")";
     if (!r.outcome_certified)

@@ -37,14 +37,16 @@
 //   handful, as r(sigma) varies on the scale 1/omega.
 #pragma once
 
-#include <viscor/ode/detail/taylor_series.hpp>
+#include <viscor/core/contact_law.hpp>
 #include <viscor/impact/detail/taylor_tail.hpp>
+#include <viscor/ode/detail/taylor_series.hpp>
 #include <viscor/ode/taylor_integrator.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <numeric>
 #include <type_traits>
 #include <vector>
 
@@ -63,6 +65,41 @@ struct impact_constants {
   bool use_root_variable = false;
   long Q = 1, Q_alpha = 1, Q_beta = 1;
 };
+
+/// The constants of (law, gamma, g) in Real: the one place that builds
+/// impact_constants (the Taylor solver and the tests call it). The endpoint
+/// variable is u = s^Q for rational exponents, Q = lcm of the denominators,
+/// unless Q > 64 or Q alpha or Q beta > 512; else u = exp(sigma).
+template <class Real>
+impact_constants<Real> make_impact_constants(const contact_law& law, const Real& gamma, const Real& g) {
+  impact_constants<Real> c;
+  c.alpha = law.alpha.value<Real>();
+  c.beta = law.beta.value<Real>();
+  c.gamma = gamma;
+  c.g = g;
+  c.alpha_plus_one = c.alpha + 1;
+  c.beta_plus_one = c.beta + 1;
+  c.gamma_beta = gamma * c.beta;
+  c.two_gamma = 2 * gamma;
+  c.two_gamma_beta = 2 * c.gamma_beta;
+  c.alpha_equals_beta = law.alpha == law.beta;
+  c.beta_is_one = law.beta.is_rational() && law.beta.numerator() == 1 && law.beta.denominator() == 1;
+  c.alpha_is_one = law.alpha.is_rational() && law.alpha.numerator() == 1 && law.alpha.denominator() == 1;
+  // NOTE: u = s^Q needs polynomials of degree Q(alpha+1) - 1; for huge
+  // denominators the exponential variable is cheaper and just as exact.
+  if (law.alpha.is_rational() && law.beta.is_rational()) {
+    const long q = std::lcm(law.alpha.denominator(), law.beta.denominator());
+    if (q <= 64) {
+      const long qa = q / law.alpha.denominator() * law.alpha.numerator();
+      const long qb = q / law.beta.denominator() * law.beta.numerator();
+      if (qa <= 512 && qb <= 512) {
+        c.use_root_variable = true;
+        c.Q = q, c.Q_alpha = qa, c.Q_beta = qb;
+      }
+    }
+  }
+  return c;
+}
 
 /// Pointers to the series of one time_system jet in arithmetic T, with its scratch.
 template <class T>
@@ -202,11 +239,13 @@ class time_system {
     for (auto* a : {&m_tU, &m_tV, &m_tE, &m_tA, &m_tP, &m_tdP, &m_tju}) a->assign(order + 2, 0);
     m_tinv = integer_reciprocals<tail_arithmetic>(order + 1);
     auto& t = m_tail_c;
-    t.gamma = static_cast<tail_arithmetic>(m_c.gamma);
-    t.g = static_cast<tail_arithmetic>(m_c.g);
-    t.alpha_plus_one = static_cast<tail_arithmetic>(m_c.alpha_plus_one);
-    t.beta_plus_one = static_cast<tail_arithmetic>(m_c.beta_plus_one);
-    t.two_gamma = static_cast<tail_arithmetic>(m_c.two_gamma);
+    bool ok = true;
+    t.gamma = plan::constant(m_c.gamma, ok);
+    t.g = plan::constant(m_c.g, ok);
+    t.alpha_plus_one = plan::constant(m_c.alpha_plus_one, ok);
+    t.beta_plus_one = plan::constant(m_c.beta_plus_one, ok);
+    t.two_gamma = plan::constant(m_c.two_gamma, ok);
+    m_tail_usable = ok;  // else every jet is finished in Real
     t.alpha_equals_beta = m_c.alpha_equals_beta;
     t.beta_is_one = m_c.beta_is_one;
   }
@@ -214,6 +253,7 @@ class time_system {
   // Orders split + 1 .. p of s in the tail arithmetic; false (nothing changed) when a
   // needed value leaves its range.
   bool tail(time_series<Real>& s, std::size_t split, std::size_t p) {
+    if (!m_tail_usable) return false;
     const int m = m_plan.scale_exponent({s.U, s.V});
     // orders 0 .. split (A, dP: 0 .. split - 1); dP[k] is order k of (u^beta)', times H^(k+1)
     const bool in_range = plan::down(s.U, m_tU.data(), split, m) && plan::down(s.V, m_tV.data(), split, m) &&
@@ -226,6 +266,13 @@ class time_system {
                                    m_tju.data(), &m_tinv, 1 / u0, 0, 0};
     if (m_c.alpha_equals_beta) t.A = t.P;
     time_orders<tail_arithmetic, true>(t, m_tail_c, split, p, std::ldexp(tail_arithmetic(1), m));
+    const std::size_t first = split + 1;
+    if (!plan::outputs_in_range(m_tU.data(), first, p) || !plan::outputs_in_range(m_tV.data(), first, p) ||
+        !plan::outputs_in_range(m_tE.data(), first, p))
+      return false;
+    if ((s.V[0] == 0 && !plan::all_zero(m_tV.data(), first, p)) ||
+        (s.E[0] == 0 && !plan::all_zero(m_tE.data(), first, p)))
+      return false;  // u > 0 always here
     plan::up(m_tU.data(), s.U, split + 1, p, m);
     plan::up(m_tV.data(), s.V, split + 1, p, m);
     plan::up(m_tE.data(), s.E, split + 1, p, m);
@@ -241,6 +288,7 @@ class time_system {
   std::size_t m_last_tail_start = 0;
   std::vector<tail_arithmetic> m_tU, m_tV, m_tE, m_tA, m_tP, m_tdP, m_tju, m_tinv;
   impact_constants<tail_arithmetic> m_tail_c;
+  bool m_tail_usable = false;  // every constant of the tail is 0 or a normal double
 };
 
 /// Pointers to the series of one endpoint_system jet in arithmetic T: the states,
@@ -302,6 +350,10 @@ class endpoint_system {
     if (m_plan.split() < order) {
       for (auto* a : {&m_tV, &m_tTau, &m_tE, &m_tr, &m_tJ, &m_tM, &m_tL}) a->assign(order + 2, 0);
       m_tinv = integer_reciprocals<tail_arithmetic>(order + 1);
+      bool ok = true;
+      m_tail_gamma_beta = plan::constant(c.gamma_beta, ok);
+      m_tail_two_gamma_beta = plan::constant(c.two_gamma_beta, ok);
+      m_tail_usable = ok;
     }
   }
 
@@ -351,8 +403,8 @@ class endpoint_system {
       m_deg_J = static_cast<std::size_t>(Q - 1);
       m_deg_L = static_cast<std::size_t>(m_c.Q_beta - 1);
       m_deg_M = static_cast<std::size_t>(std::max<long>(Q - 1, Q + m_c.Q_alpha - 1));
-      // NOTE: only up to the degrees: beyond them the coefficients are 0 (a
-      // loop to the order was a fifth of the work of a float128 endpoint jet).
+      // NOTE: only up to the degrees: beyond them the coefficients are 0, and
+      // a loop to the order is costly (docs/performance.md).
       const std::size_t top = std::min(p, std::max({m_deg_J, m_deg_L, m_deg_M}));
       for (std::size_t j = 0; j <= top; ++j) {
         m_J[j] *= Q;
@@ -383,6 +435,7 @@ class endpoint_system {
 
   // As time_system::tail. r is known to order split - 1 only.
   bool tail(endpoint_series<Real>& s, std::size_t split, std::size_t p) {
+    if (!m_tail_usable) return false;
     const int m = m_plan.scale_exponent({s.V, s.Tau});
     const bool in_range = plan::down(s.V, m_tV.data(), split, m) && plan::down(s.Tau, m_tTau.data(), split, m) &&
                           plan::down(s.E, m_tE.data(), split, m) && plan::down(s.r, m_tr.data(), split - 1, m) &&
@@ -392,9 +445,16 @@ class endpoint_system {
     if (!in_range || !std::isnormal(m_tV[0])) return false;
     endpoint_series<tail_arithmetic> t{m_tV.data(), m_tTau.data(), m_tE.data(), m_tr.data(), m_tJ.data(),
                                        m_tM.data(), m_tL.data(), s.deg_J, s.deg_M, s.deg_L, &m_tinv,
-                                       static_cast<tail_arithmetic>(s.gamma_beta),
-                                       static_cast<tail_arithmetic>(s.two_gamma_beta), 0};
+                                       m_tail_gamma_beta, m_tail_two_gamma_beta, 0};
     endpoint_orders<tail_arithmetic, true>(t, split, p, std::ldexp(tail_arithmetic(1), m));
+    const std::size_t first = split + 1;
+    if (!plan::outputs_in_range(m_tV.data(), first, p) || !plan::outputs_in_range(m_tTau.data(), first, p) ||
+        !plan::outputs_in_range(m_tE.data(), first, p))
+      return false;
+    // tau and D are 0 at the start of contact: their step scale |x0| is 0 there.
+    if ((s.Tau[0] == 0 && !plan::all_zero(m_tTau.data(), first, p)) ||
+        (s.E[0] == 0 && !plan::all_zero(m_tE.data(), first, p)))
+      return false;
     plan::up(m_tV.data(), s.V, split + 1, p, m);
     plan::up(m_tTau.data(), s.Tau, split + 1, p, m);
     plan::up(m_tE.data(), s.E, split + 1, p, m);
@@ -410,6 +470,8 @@ class endpoint_system {
   plan m_plan;
   std::size_t m_last_tail_start = 0;
   std::vector<tail_arithmetic> m_tV, m_tTau, m_tE, m_tr, m_tJ, m_tM, m_tL, m_tinv;
+  tail_arithmetic m_tail_gamma_beta = 0, m_tail_two_gamma_beta = 0;
+  bool m_tail_usable = false;  // gamma beta, 2 gamma beta are 0 or normal doubles
 };
 
 template <class Real>
@@ -468,5 +530,9 @@ class spiral_system {
   std::vector<Real> m_R, m_Y, m_inv;
   Real m_time_rate, m_dissipation_rate, m_t;
 };
+
+// The integrator caps its steps by the double tail of these two (taylor_integrator::limit_tail).
+static_assert(taylor_system_with_tail<time_system<double>> && taylor_system_with_tail<endpoint_system<double>>);
+static_assert(taylor_system<spiral_system<double>, double> && !taylor_system_with_tail<spiral_system<double>>);
 
 }  // namespace viscor::detail

@@ -13,6 +13,14 @@
 // The tail runs in the independent variable h' = h / H, H = 2^m near the radius of
 // convergence: coefficient k times H^k is then of order 1, inside double's exponent
 // range whatever Real's, and the system's right-hand sides are multiplied by H.
+//
+// The tail declines (the jet is finished in Real) whenever double's relative error
+// model could fail or the step cap could not see its error: a constant (gamma, g,
+// ...) or an input coefficient that is nonzero in Real but not a normal double
+// (gamma = 1e-320 is subnormal there, 1e-400 zero); a non-finite or subnormal
+// output; or nonzero tail orders in a state that is 0 at the expansion point (tau
+// and D at the start of contact), whose step scale is 0, so that the cap
+// (taylor_integrator::limit_tail) skips it.
 #pragma once
 
 #include <viscor/core/detail/log_abs.hpp>
@@ -96,13 +104,37 @@ class tail_plan {
     return std::isfinite(l) ? static_cast<int>(std::lround(-l / std::log(2.0))) : 0;
   }
 
-  /// to[k] = from[k] 2^(k m + shift), k = 0..last; false if one leaves double's range.
+  /// to[k] = from[k] 2^(k m + shift), k = 0..last; false if one leaves double's
+  /// normal range (overflow, or a nonzero value that becomes subnormal or 0).
   static bool down(const Real* from, arithmetic* to, std::size_t last, int m, int shift = 0) {
     using std::ldexp;
     for (std::size_t k = 0; k <= last; ++k) {
       to[k] = static_cast<arithmetic>(ldexp(from[k], static_cast<int>(k) * m + shift));
-      if (!std::isfinite(to[k])) return false;
+      if (to[k] == 0 ? from[k] != 0 : !std::isnormal(to[k])) return false;
     }
+    return true;
+  }
+
+  /// c in the tail arithmetic; `ok` becomes false unless c is 0 or a normal double
+  /// (a constant outside double's normal range switches the tail off).
+  static arithmetic constant(const Real& c, bool& ok) {
+    const arithmetic x = static_cast<arithmetic>(c);
+    if (x == 0 ? c != 0 : !std::isnormal(x)) ok = false;
+    return x;
+  }
+
+  /// True if t[first..last] are all 0 or normal doubles (no overflow, NaN or underflow).
+  static bool outputs_in_range(const arithmetic* t, std::size_t first, std::size_t last) {
+    for (std::size_t k = first; k <= last; ++k)
+      if (t[k] != 0 && !std::isnormal(t[k])) return false;
+    return true;
+  }
+
+  /// True if t[first..last] are all 0: what the tail may add to a state that is 0
+  /// at the expansion point (the step cap measures states relative to their value).
+  static bool all_zero(const arithmetic* t, std::size_t first, std::size_t last) {
+    for (std::size_t k = first; k <= last; ++k)
+      if (t[k] != 0) return false;
     return true;
   }
 

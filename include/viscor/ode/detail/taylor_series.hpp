@@ -8,11 +8,9 @@
 //
 // NOTE: these loops are the whole cost of an integration, so no function
 // allocates. Sums of products run in a local accumulator for the built-in and
-// float128 types (accumulating into out, which may alias the inputs as far as
-// the compiler knows, went through memory: 30% of the time in double), and on
-// MPFR's raw mpfr_mul + mpfr_add into a scratch variable (Boost turns x += a * b
-// into mpfr_fma, whose exact double-length product made it 1.5x slower at 50
-// digits and at 1000).
+// float128 types (out may alias the inputs, which keeps a sum into it in memory),
+// and on MPFR's raw mpfr_mul + mpfr_add into a scratch variable (Boost turns
+// x += a * b into a slower mpfr_fma). Measurements: docs/performance.md.
 #pragma once
 
 #include <viscor/core/detail/log_abs.hpp>
@@ -150,8 +148,8 @@ void real_power(Real& out, Real& scratch, const Real& p_plus_one, const Real* a,
   out /= static_cast<long>(k);
 }
 
-/// real_power with 1/a[0] and the table inv[k] = 1/k given (divide_by): the
-/// divisions are a fifth of the cost of a double jet.
+/// real_power with 1/a[0] and the table inv[k] = 1/k given (divide_by): divisions
+/// are costly in double (docs/performance.md).
 template <class Real>
 void real_power(Real& out, Real& scratch, const Real& p_plus_one, const Real* a, const Real* ja, const Real* c,
                 std::size_t k, const Real& inv_a0, const std::vector<Real>& inv) {

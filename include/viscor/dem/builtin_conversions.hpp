@@ -1,0 +1,82 @@
+// The codes' own e -> damping conversions, as the installed programs compute them,
+// and their inverses (the deck e that makes the code use a given damping).
+//   LAMMPS damping tsuji (pair_coeff / fix wall/gran): the deck's damping entry is
+//     taken as e and replaced by the polynomial
+//       eta'(e) = 1.2728 - 4.2783 e + 11.087 e^2 - 22.348 e^3 + 27.467 e^4 - 18.022 e^5 + 4.8218 e^6,
+//     decreasing on [0, 1] from 1.2728 to 0.0003 (not 0: e = 1 still damps).
+//   LIGGGHTS model hertz: coefficientRestitution e gives
+//       b(e) = -ln e / sqrt(ln^2 e + pi^2)   (the code keeps the sign; the force uses |b|),
+//     which is in [0, 1) for e in (0, 1].
+// Both come from linear-spring or no-load fits; viscor measures how far off they
+// are under load (dem_calibration.hpp).
+#pragma once
+
+#include <viscor/core/exceptions.hpp>
+#include <viscor/core/parameters.hpp>
+#include <viscor/core/real_io.hpp>
+#include <viscor/scenes/calibration.hpp>
+
+#include <boost/math/constants/constants.hpp>
+#include <boost/math/tools/roots.hpp>
+
+#include <cstdint>
+#include <utility>
+
+namespace viscor::dem {
+
+/// LAMMPS tsuji: the damping number the code derives from the deck's e.
+template <class Real>
+Real lammps_tsuji_damping(const Real& e) {
+  // Horner form of the code's polynomial; coefficients as integer ratios.
+  Real p = Real(48218) / 10000;
+  p = p * e - Real(18022) / 1000;
+  p = p * e + Real(27467) / 1000;
+  p = p * e - Real(22348) / 1000;
+  p = p * e + Real(11087) / 1000;
+  p = p * e - Real(42783) / 10000;
+  p = p * e + Real(12728) / 10000;
+  return p;
+}
+
+/// LIGGGHTS hertz: |b(e)| = -ln e / sqrt(ln^2 e + pi^2), the damping ratio of a linear spring.
+template <class Real>
+Real liggghts_damping_ratio(const Real& e) {
+  using std::log;
+  using std::sqrt;
+  const Real l = log(e);
+  return Real(-l / sqrt(l * l + boost::math::constants::pi<Real>() * boost::math::constants::pi<Real>()));
+}
+
+/// The e in [0, 1] whose LAMMPS tsuji polynomial equals `damping`; unreachable_target
+/// outside [eta'(1), eta'(0)] = [0.0003, 1.2728].
+template <class Real>
+Real lammps_tsuji_deck_e(const Real& damping) {
+  using std::abs;
+  require_finite(damping, "damping");
+  const Real lo_value = lammps_tsuji_damping(Real(1)), hi_value = lammps_tsuji_damping(Real(0));
+  if (damping < lo_value || damping > hi_value)
+    throw unreachable_target("LAMMPS tsuji damping " + to_decimal_string(damping) +
+                             " is outside what a deck e in [0, 1] gives, [" + to_decimal_string(lo_value) + ", " +
+                             to_decimal_string(hi_value) + "]");
+  auto f = [&](const Real& e) { return Real(lammps_tsuji_damping(e) - damping); };
+  // The polynomial decreases on [0, 1] (checked on a 1001-point grid, see docs/dem.md).
+  std::uintmax_t iterations = 400;
+  const auto tol = boost::math::tools::eps_tolerance<Real>(boost::math::tools::digits<Real>() - 2);
+  const std::pair<Real, Real> r = boost::math::tools::toms748_solve(f, Real(0), Real(1), Real(hi_value - damping),
+                                                                     Real(lo_value - damping), tol, iterations);
+  return Real((r.first + r.second) / 2);
+}
+
+/// The e whose LIGGGHTS damping ratio is b, for b in [0, 1): e = exp(-pi b / sqrt(1 - b^2)).
+template <class Real>
+Real liggghts_deck_e(const Real& b) {
+  using std::exp;
+  using std::sqrt;
+  require_non_negative(b, "damping ratio");
+  if (!(b < 1))
+    throw unreachable_target("LIGGGHTS damping ratio " + to_decimal_string(b) +
+                             " needs b < 1: no coefficientRestitution in (0, 1] gives it");
+  return Real(exp(-boost::math::constants::pi<Real>() * b / sqrt(1 - b * b)));
+}
+
+}  // namespace viscor::dem

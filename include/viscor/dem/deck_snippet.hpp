@@ -1,0 +1,49 @@
+// Ready-to-paste input lines for the deck values of dem_deck_for: the contact
+// model lines only (the tangential model and friction are the user's; a head-on
+// impact does not feel them).
+#pragma once
+
+#include <viscor/dem/dem_model.hpp>
+#include <viscor/dem/hertz_contact.hpp>
+
+#include <optional>
+#include <string>
+
+namespace viscor::dem {
+
+struct deck_strings {
+  std::string youngs_modulus, poisson_ratio, damping;
+  std::optional<std::string> wall_youngs_modulus;  ///< LIGGGHTS wall type
+};
+
+inline std::string deck_snippet(const dem_model& model, contact_kind kind, const deck_strings& d) {
+  const std::string damping_name(model.damping_name);
+  std::string s;
+  if (model.code == dem_code::lammps) {
+    const std::string normal = "hertz/material " + d.youngs_modulus + " " + d.damping + " " + d.poisson_ratio +
+                               " damping " + damping_name + " tangential linear_nohistory 0 0";
+    if (kind == contact_kind::wall) {
+      s += "# bead on a rigid plane z = 0 (LAMMPS' wall reads E_deck/(2(1-nu)): E_deck = 2E/(1+nu))\n";
+      s += "fix wall all wall/gran granular " + normal + " zplane 0.0 NULL\n";
+    } else {
+      s += "pair_style granular\n";
+      s += "pair_coeff * * " + normal + "\n";
+    }
+    return s;
+  }
+  // LIGGGHTS: type 1 = beads, type 2 = wall.
+  const bool wall = kind == contact_kind::wall;
+  const std::string wall_modulus = wall ? d.wall_youngs_modulus.value_or(d.youngs_modulus) : d.youngs_modulus;
+  s += "hard_particles yes  # allows youngsModulus > 1e9 Pa in SI units\n";
+  s += "fix m1 all property/global youngsModulus peratomtype " + d.youngs_modulus + " " + wall_modulus + "\n";
+  s += "fix m2 all property/global poissonsRatio peratomtype " + d.poisson_ratio + " " + d.poisson_ratio + "\n";
+  if (wall)
+    s += "# e for the bead-wall pair (1,2); the bead-bead entry (1,1) is for pair contacts\n";
+  const std::string e = d.damping;
+  s += "fix m3 all property/global coefficientRestitution peratomtypepair 2 " + e + " " + e + " " + e + " " + e + "\n";
+  s += "pair_style gran model hertz tangential history\npair_coeff * *\n";
+  if (wall) s += "fix wall all wall/gran model hertz tangential history primitive type 2 zplane 0.0\n";
+  return s;
+}
+
+}  // namespace viscor::dem

@@ -1,0 +1,110 @@
+// From a measured e to the deck, and from a deck to the e it produces.
+//
+// Forward (dem_deck_for): the physical bead (make_hertz_contact) at impact speed
+// v0 under gravity and a force F is calibrated exactly (calibrate_gamma0, the
+// Taylor solve): gamma0 gives e = target. Then D = gamma0 / damping_scale and the
+// deck entry is D itself or the e the code's own conversion turns into D.
+// For models whose deck entry is an e, builtin_e is the e the code produces when
+// the measured e is written there directly (the code's own conversion).
+//
+// Loads: for a wall the bead feels gravity + F/m towards the wall. For a pair,
+// v0 is the approach speed, a uniform gravity moves both beads alike and drops
+// out, and F presses the two together, so the relative motion feels F/m*.
+#pragma once
+
+#include <viscor/core/scaling.hpp>
+#include <viscor/dem/deck_convention.hpp>
+#include <viscor/impact/solve_impact.hpp>
+#include <viscor/scenes/calibration.hpp>
+
+#include <optional>
+#include <string>
+
+namespace viscor::dem {
+
+template <class Real>
+struct dem_impact {
+  bead_material<Real> bead;
+  contact_kind kind = contact_kind::wall;
+  Real v0 = 0;       ///< impact (approach) speed, m/s
+  Real gravity = 0;  ///< m/s^2 towards the wall (drops out for a pair)
+  Real force = 0;    ///< N pressing the bead on the wall (or the pair together)
+};
+
+/// viscor's physical parameters for the impact (m = m*, see the header comment).
+template <class Real>
+physical_parameters<Real> physical_impact(const hertz_contact<Real>& c, const dem_impact<Real>& impact,
+                                          const Real& gamma0) {
+  physical_parameters<Real> p;
+  p.m = c.effective_mass, p.k = c.stiffness, p.gamma0 = gamma0, p.v0 = impact.v0;
+  p.gravity = impact.kind == contact_kind::wall ? impact.gravity : Real(0);
+  p.force = impact.force;
+  return p;
+}
+
+/// The e the code produces for a deck damping entry at this impact (exact solve).
+template <class Real>
+impact_result<Real> e_for_deck(const dem_model& model, const dem_impact<Real>& impact, const Real& deck_damping,
+                               const solve_options<Real>& options = {}) {
+  validate_deck_damping(model, deck_damping);
+  const hertz_contact<Real> c = make_hertz_contact(impact.bead, impact.kind);
+  const Real gamma0 = damping_number(model, deck_damping) * damping_scale(model, c);
+  const contact_law law = law_of(model);
+  const scaled_parameters<Real> s = to_scaled(law, physical_impact(c, impact, gamma0));
+  return solve_impact(law, s.gamma, s.g, options);
+}
+
+template <class Real>
+struct dem_deck {
+  Real youngs_modulus = 0;  ///< deck E (or Y) of the bead
+  std::optional<Real> wall_youngs_modulus;  ///< LIGGGHTS wall: the wall type's Y (rigid)
+  Real poisson_ratio = 0;   ///< deck nu
+  Real damping = 0;         ///< deck damping entry (a coefficient, or an e for restitution models)
+  Real damping_number = 0;  ///< D, what the code multiplies the damping force by
+  Real gamma0 = 0;          ///< viscor's physical damping (units that make k gamma0 d/dt(delta^beta) a force)
+  hertz_contact<Real> contact;
+  physical_calibration<Real> calibration;
+  std::optional<Real> builtin_e;  ///< restitution models: e when the target is written into the deck
+};
+
+/// The deck that reproduces target_e at this impact; unreachable_target when no
+/// deck entry of the model can (the message says why).
+template <class Real>
+dem_deck<Real> dem_deck_for(const dem_model& model, const dem_impact<Real>& impact, const Real& target_e,
+                            const calibration_options<Real>& options = {}) {
+  require_finite(target_e, "target_e");
+  if (!(target_e > 0 && target_e < 1))
+    throw invalid_parameter("parameter target_e must be in (0, 1), got " + to_decimal_string(target_e));
+  require_positive(impact.v0, "v0");
+  require_finite(impact.gravity, "gravity");
+  require_finite(impact.force, "force");
+  dem_deck<Real> d;
+  d.contact = make_hertz_contact(impact.bead, impact.kind);
+  const contact_law law = law_of(model);
+  const physical_parameters<Real> p = physical_impact(d.contact, impact, Real(0));
+  d.calibration = calibrate_gamma0(law, p.m, p.k, p.v0, p.gravity, p.force, target_e, options);
+  d.gamma0 = d.calibration.gamma0;
+  d.damping_number = d.gamma0 / damping_scale(model, d.contact);
+  try {
+    d.damping = deck_damping_for(model, d.damping_number);
+  } catch (const unreachable_target& e) {
+    throw unreachable_target("target_e = " + to_decimal_string(target_e) + " is unreachable with " +
+                             std::string(model.code_name) + " " + std::string(model.damping_name) +
+                             " at this impact: " + e.what());
+  }
+  d.youngs_modulus = deck_youngs_modulus(model, impact.bead, impact.kind);
+  d.poisson_ratio = impact.bead.poisson_ratio;
+  if (model.code == dem_code::liggghts && impact.kind == contact_kind::wall)
+    d.wall_youngs_modulus = parse_real<Real>(liggghts_rigid_wall_modulus, "wall youngs_modulus");
+  if (model.deck_kind == deck_damping_kind::coefficient_of_restitution)
+    d.builtin_e = e_for_deck(model, impact, target_e, options.solve).e;
+  return d;
+}
+
+/// The built-in conversion's miss in % of (1 - target_e): 100 (e - target)/(1 - target).
+template <class Real>
+Real percent_of_one_minus_e(const Real& e, const Real& target_e) {
+  return Real(100 * (e - target_e) / (1 - target_e));
+}
+
+}  // namespace viscor::dem

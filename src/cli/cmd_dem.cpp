@@ -1,0 +1,208 @@
+// viscor dem CODE: the damping to write into a DEM code's contact model so the
+// code reproduces a measured e at an impact speed under a load (the exact
+// calibration of viscor's force law, mapped through the code's own conventions,
+// include/viscor/dem/), and the reverse: the e a deck damping entry produces.
+#include "cli_common.hpp"
+#include "command_registry.hpp"
+
+#include <viscor/dem/dem_calibration.hpp>
+#include <viscor/dem/deck_snippet.hpp>
+
+#include <sstream>
+#include <vector>
+
+namespace viscor::cli {
+namespace {
+
+std::vector<std::string> split_list(const std::string& text) {
+  std::vector<std::string> items;
+  std::string item;
+  std::istringstream in(text);
+  while (std::getline(in, item, ','))
+    if (!item.empty()) items.push_back(item);
+  return items;
+}
+
+struct dem_command {
+  output_options output;
+  std::string code, damping, contact = "wall";
+  std::string youngs_modulus, poisson_ratio, radius, density;
+  std::string target_e, deck_damping, v0, gravity, force = "0";
+  std::string speeds = "0.001,0.01,0.1,1,10";
+  int digits = 15;
+
+  void require(const std::string& value, const char* option, const char* what) const {
+    if (value.empty()) throw invalid_parameter(std::string("dem needs ") + option + " (" + what + ")");
+  }
+
+  void run() const {
+    require(code, "CODE", "lammps or liggghts");
+    require(damping, "--damping", "the code's damping model");
+    const dem::dem_model& model = dem::find_dem_model(code, damping);
+    const dem::contact_kind kind = dem::parse_contact_kind(contact);
+    require(youngs_modulus, "--youngs-modulus", "Pa");
+    require(poisson_ratio, "--poisson-ratio", "dimensionless");
+    require(radius, "--radius", "m");
+    require(density, "--density", "kg/m^3");
+    require(gravity, "--gravity", "m/s^2 towards the wall; 0 for none");
+    const bool reverse = !deck_damping.empty();
+    if (reverse && !target_e.empty())
+      throw invalid_parameter("give either --target-e (deck for a measured e) or --deck-damping (e for a deck), not both");
+    if (!reverse) {
+      require(target_e, "--target-e", "the measured coefficient of restitution, 0 < e < 1");
+      require(v0, "--v0", "impact speed, m/s");
+    }
+    with_working_precision(digits, [&]<class Real>() {
+      dem::dem_impact<Real> impact;
+      impact.bead.youngs_modulus = parse_real<Real>(youngs_modulus, "youngs_modulus");
+      impact.bead.poisson_ratio = parse_real<Real>(poisson_ratio, "poisson_ratio");
+      impact.bead.radius = parse_real<Real>(radius, "radius");
+      impact.bead.density = parse_real<Real>(density, "density");
+      impact.bead.validate();
+      impact.kind = kind;
+      impact.gravity = parse_real<Real>(gravity, "gravity");
+      impact.force = parse_real<Real>(force, "force");
+      json j;
+      j["command"] = "dem";
+      j["code"] = code;
+      j["damping"] = damping;
+      j["contact"] = contact;
+      j["law"] = law_json(dem::law_of(model));
+      j["version"] = std::string(model.version);
+      j["source"] = std::string(model.source);
+      j["material"] = {{"youngs_modulus", youngs_modulus},
+                       {"poisson_ratio", poisson_ratio},
+                       {"radius", radius},
+                       {"density", density}};
+      j["gravity"] = gravity;
+      j["force"] = force;
+      const dem::hertz_contact<Real> c = dem::make_hertz_contact(impact.bead, kind);
+      j["effective_modulus_pa"] = number(c.effective_modulus);
+      j["effective_radius_m"] = number(c.effective_radius);
+      j["effective_mass_kg"] = number(c.effective_mass);
+      j["stiffness"] = number(c.stiffness);
+      std::ostringstream text;
+      text << "code        " << model.version << "\n"
+           << "model       " << code << " damping " << damping << " on a " << contact << " (viscor law "
+           << model.law_name << ")\n"
+           << "contact     E* = " << number(c.effective_modulus) << " Pa, R* = " << number(c.effective_radius)
+           << " m, m* = " << number(c.effective_mass) << " kg, k = " << number(c.stiffness) << " N/m^1.5\n";
+      if (reverse)
+        run_reverse<Real>(model, impact, j, text);
+      else
+        run_forward<Real>(model, impact, j, text);
+      output.emit(text.str(), j);
+    });
+  }
+
+  template <class Real>
+  void run_forward(const dem::dem_model& model, dem::dem_impact<Real>& impact, json& j, std::ostringstream& text) const {
+    impact.v0 = parse_real<Real>(v0, "v0");
+    const Real target = parse_real<Real>(target_e, "target_e");
+    calibration_options<Real> options;
+    const dem::dem_deck<Real> d = dem::dem_deck_for(model, impact, target, options);
+    dem::deck_strings s{to_decimal_string(d.youngs_modulus), to_decimal_string(d.poisson_ratio),
+                        to_decimal_string(d.damping), std::nullopt};
+    if (d.wall_youngs_modulus) s.wall_youngs_modulus = dem::liggghts_rigid_wall_modulus;
+    json deck;
+    deck["youngs_modulus"] = s.youngs_modulus;
+    deck["damping"] = s.damping;
+    deck["poisson_ratio"] = s.poisson_ratio;
+    if (s.wall_youngs_modulus) deck["wall_youngs_modulus"] = *s.wall_youngs_modulus;
+    deck["damping_kind"] = model.deck_kind == dem::deck_damping_kind::coefficient ? "coefficient"
+                                                                                   : "coefficient_of_restitution";
+    j["target_e"] = target_e;
+    j["v0"] = v0;
+    j["deck"] = deck;
+    j["damping_number"] = number(d.damping_number);
+    j["gamma0"] = number(d.gamma0);
+    j["gamma"] = number(d.calibration.scaled.gamma);
+    j["g"] = number(d.calibration.scaled.g);
+    j["e"] = number(d.calibration.scaled.e);
+    j["e_error"] = number(d.calibration.scaled.e_error);
+    j["time_scale_s"] = number(d.calibration.time_scale);
+    text << "impact      e = " << target_e << " at v0 = " << v0 << " m/s, gravity = " << gravity
+         << " m/s^2, force = " << force << " N\n"
+         << "viscor      gamma0 = " << number(d.gamma0) << " (scaled gamma = " << number(d.calibration.scaled.gamma)
+         << ", g = " << number(d.calibration.scaled.g) << "), e = " << number(d.calibration.scaled.e) << "\n"
+         << "deck        youngs_modulus = " << s.youngs_modulus << ", poisson_ratio = " << s.poisson_ratio
+         << ", damping = " << s.damping << "\n";
+    if (s.wall_youngs_modulus) text << "            wall type youngs_modulus = " << *s.wall_youngs_modulus << " (rigid)\n";
+    if (d.builtin_e) {
+      const Real miss = *d.builtin_e - target;
+      j["builtin_e"] = number(*d.builtin_e);
+      j["builtin_error"] = number(miss);
+      j["builtin_error_percent_of_one_minus_e"] = number(dem::percent_of_one_minus_e(*d.builtin_e, target));
+      text << "builtin     writing e = " << target_e << " into the deck gives e = " << to_decimal_string(*d.builtin_e, 10)
+           << " (" << to_decimal_string(miss, 3) << ", " << to_decimal_string(dem::percent_of_one_minus_e(*d.builtin_e, target), 3)
+           << " % of 1 - e)\n";
+    }
+    const std::string snippet = dem::deck_snippet(model, impact.kind, s);
+    j["snippet"] = snippet;
+    text << "snippet\n" << snippet;
+  }
+
+  template <class Real>
+  void run_reverse(const dem::dem_model& model, dem::dem_impact<Real>& impact, json& j, std::ostringstream& text) const {
+    const Real deck_value = parse_real<Real>(deck_damping, "deck_damping");
+    dem::validate_deck_damping(model, deck_value);
+    std::vector<std::string> speed_list = split_list(speeds);
+    if (!v0.empty()) speed_list.insert(speed_list.begin(), v0);
+    if (speed_list.empty()) throw invalid_parameter("--speeds lists no speed (got '" + speeds + "')");
+    struct load { std::string gravity, force; };
+    std::vector<load> loads{{"0", "0"}};
+    if (impact.gravity != 0 || impact.force != 0) loads.push_back({gravity, force});
+    j["deck_damping"] = deck_damping;
+    j["damping_number"] = number(dem::damping_number(model, deck_value));
+    json rows = json::array();
+    text << "deck        damping = " << deck_damping << " (the deck modulus as viscor dem writes it)\n"
+         << "v0 (m/s)    gravity (m/s^2)  force (N)  e\n";
+    for (const std::string& speed : speed_list) {
+      for (const load& l : loads) {
+        dem::dem_impact<Real> at = impact;
+        at.v0 = parse_real<Real>(speed, "v0");
+        at.gravity = parse_real<Real>(l.gravity, "gravity");
+        at.force = parse_real<Real>(l.force, "force");
+        require_positive(at.v0, "v0");
+        const impact_result<Real> r = dem::e_for_deck(model, at, deck_value);
+        json row;
+        row["v0"] = speed, row["gravity"] = l.gravity, row["force"] = l.force;
+        row["e"] = number(r.e);
+        row["outcome"] = to_string(r.outcome);
+        rows.push_back(row);
+        text << speed << std::string(speed.size() < 12 ? 12 - speed.size() : 1, ' ') << l.gravity
+             << std::string(l.gravity.size() < 17 ? 17 - l.gravity.size() : 1, ' ') << l.force
+             << std::string(l.force.size() < 11 ? 11 - l.force.size() : 1, ' ') << to_decimal_string(r.e, 12) << "\n";
+      }
+    }
+    j["table"] = rows;
+  }
+};
+
+void setup(CLI::App& app) {
+  auto cmd = std::make_shared<dem_command>();
+  cmd->output.add_to(app);
+  app.add_option("code", cmd->code, "DEM code: lammps (29 Sep 2021) or liggghts (3.8.0)");
+  app.add_option("--damping", cmd->damping,
+                 "damping model: lammps velocity|mass_velocity|viscoelastic|tsuji, liggghts hertz");
+  app.add_option("--contact", cmd->contact, "wall (bead on a rigid wall) or pair (two identical beads)")
+      ->capture_default_str();
+  app.add_option("--youngs-modulus", cmd->youngs_modulus, "Young's modulus E of the bead, Pa");
+  app.add_option("--poisson-ratio", cmd->poisson_ratio, "Poisson ratio of the bead");
+  app.add_option("--radius", cmd->radius, "bead radius, m");
+  app.add_option("--density", cmd->density, "bead density, kg/m^3");
+  app.add_option("--target-e", cmd->target_e, "measured coefficient of restitution to reproduce, 0 < e < 1");
+  app.add_option("--deck-damping", cmd->deck_damping, "reverse: the deck's damping entry; prints the e it gives");
+  app.add_option("--v0", cmd->v0, "impact (approach) speed, m/s");
+  app.add_option("--gravity", cmd->gravity, "gravitational acceleration towards the wall, m/s^2 (required; 0 for none)");
+  app.add_option("--force", cmd->force, "constant force pressing the bead on the wall (or the pair together), N")
+      ->capture_default_str();
+  app.add_option("--speeds", cmd->speeds, "reverse: comma-separated impact speeds, m/s")->capture_default_str();
+  app.add_option("--digits", cmd->digits, "working precision in decimal digits")->capture_default_str();
+  app.callback([cmd] { cmd->run(); });
+}
+
+const registration reg{"dem", "damping entries for LAMMPS / LIGGGHTS decks that reproduce a measured e", setup};
+
+}  // namespace
+}  // namespace viscor::cli

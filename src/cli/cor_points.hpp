@@ -1,0 +1,253 @@
+// viscor cor --points FILE|-: many impacts from one process. Each input line is a
+// point, CSV (first line a header naming the columns) or JSON lines, with the law
+// (`law`, or `alpha` and `beta`), `gamma`, `g` and optionally `digits`; each output
+// line is one JSON object with the same fields as `viscor cor --json`, plus `line`
+// (the input line) — or `line` and `error` for a refused point. Results are
+// printed in input order; with --threads N, N points are solved at a time.
+#pragma once
+
+#include "cli_common.hpp"
+#include "spec_json.hpp"
+
+#include <viscor/impact/solve_impact.hpp>
+
+#include <atomic>
+#include <chrono>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace viscor::cli {
+
+/// The result fields shared by `cor --json` and every `cor --points` line.
+template <class Real>
+void add_result_json(json& j, const impact_result<Real>& r, double seconds) {
+  j["method"] = std::string(to_string(r.method));
+  j["e"] = number(r.e);
+  j["one_minus_e"] = number(r.one_minus_e);
+  j["outcome"] = std::string(to_string(r.outcome));
+  j["contact_time"] = number(r.contact_time);
+  j["max_compression"] = number(r.max_compression);
+  if (r.outcome == impact_outcome::stick) j["stop_overlap"] = number(r.stop_overlap);
+  j["time_of_max_compression"] = number(r.time_of_max_compression);
+  j["energy_residual"] = number(r.energy_residual);
+  j["error_estimate"] = number(r.error_estimate);
+  j["steps"] = r.steps;
+  j["seconds"] = seconds;
+}
+
+struct point_options {
+  integration_method method = integration_method::taylor;
+  std::string tolerance = "0";
+  std::size_t max_steps = 0;
+  int default_digits = 15;
+  unsigned threads = 1;
+};
+
+/// One input point as text.
+struct point_text {
+  std::size_t line = 0;
+  std::string law, alpha, beta, gamma, g = "0", digits;
+};
+
+namespace detail {
+
+inline std::vector<std::string> split_csv(const std::string& line) {
+  std::vector<std::string> out;
+  std::stringstream in(line);
+  std::string item;
+  while (std::getline(in, item, ',')) {
+    const auto first = item.find_first_not_of(" \t\r"), last = item.find_last_not_of(" \t\r");
+    out.push_back(first == std::string::npos ? std::string() : item.substr(first, last - first + 1));
+  }
+  if (!line.empty() && line.back() == ',') out.emplace_back();
+  return out;
+}
+
+inline std::string* point_field(point_text& p, const std::string& name) {
+  if (name == "law") return &p.law;
+  if (name == "alpha") return &p.alpha;
+  if (name == "beta") return &p.beta;
+  if (name == "gamma") return &p.gamma;
+  if (name == "g") return &p.g;
+  if (name == "digits") return &p.digits;
+  return nullptr;
+}
+
+constexpr const char* point_fields = "law, alpha, beta, gamma, g, digits";
+
+/// Reads one JSON-lines point; numbers keep their exact text (spec_json's reader).
+class point_reader : public node_reader {
+ public:
+  using node_reader::node_reader;
+
+  point_text read(const spec_node& root, std::size_t line) const {
+    if (root.kind != spec_node::type::object) fail(root, "point", "each line must be a JSON object");
+    point_text p;
+    p.line = line;
+    for (const auto& [key, node] : root.members) {
+      std::string* slot = point_field(p, key);
+      if (!slot) fail(node, key, std::string("unknown field (known: ") + point_fields + ")");
+      *slot = key == "law" ? string(node, key) : node.kind == spec_node::type::string ? node.text : number_text(node, key);
+    }
+    return p;
+  }
+};
+
+inline point_text parse_json_point(const std::string& text, const std::string& where, std::size_t line) {
+  const char* furthest = text.data();
+  counting_iterator first{text.data(), &furthest}, last{text.data() + text.size(), &furthest};
+  spec_builder builder(text, where, &furthest);
+  nlohmann::json::sax_parse(first, last, &builder);
+  return point_reader(where).read(builder.root, line);
+}
+
+/// Solves one point; the JSON line (or an "error" line).
+inline json solve_point(const point_text& p, const point_options& o, bool& refused) {
+  json j;
+  j["line"] = p.line;
+  try {
+    contact_law law;
+    if (!p.law.empty()) {
+      if (!p.alpha.empty() || !p.beta.empty())
+        throw invalid_parameter("give either law or alpha and beta, not both");
+      law = law_by_name(p.law);
+    } else {
+      if (p.alpha.empty() || p.beta.empty()) throw invalid_parameter("needs law, or both alpha and beta");
+      law = make_law(exponent::parse(p.alpha, "alpha"), exponent::parse(p.beta, "beta"));
+    }
+    if (p.gamma.empty()) throw invalid_parameter("missing gamma");
+    int digits = o.default_digits;
+    if (!p.digits.empty()) {
+      if (p.digits.find_first_not_of("0123456789") != std::string::npos || p.digits.size() > 6 ||
+          std::stoi(p.digits) < 1)
+        throw invalid_parameter("digits must be a whole number from 1 to 999999, got '" + p.digits + "'");
+      digits = std::stoi(p.digits);
+    }
+    with_working_precision(digits, [&]<class Real>() {
+      solve_options<Real> options;
+      options.method = o.method;
+      options.tolerance = parse_real<Real>(o.tolerance, "tolerance");
+      options.max_steps = o.max_steps;
+      const Real gamma = parse_real<Real>(p.gamma, "gamma"), g = parse_real<Real>(p.g, "g");
+      const auto start = std::chrono::steady_clock::now();
+      const impact_result<Real> r = solve_impact(law, gamma, g, options);
+      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      j["law"] = law_json(law);
+      j["gamma"] = number(gamma);
+      j["g"] = number(g);
+      j["precision"] = scalar_json<Real>();
+      add_result_json(j, r, seconds);
+    });
+  } catch (const error& e) {
+    j["error"] = e.what();
+    refused = true;
+  }
+  return j;
+}
+
+}  // namespace detail
+
+/// Reads points from `path` ("-": standard input), writes one JSON line per point
+/// to `out`; returns the number of refused points (each named on stderr too).
+inline std::size_t solve_points(const std::string& path, const point_options& o, std::ostream& out) {
+  std::ifstream file;
+  if (path != "-") {
+    file.open(path);
+    if (!file) throw invalid_parameter("--points: cannot read '" + path + "'");
+  }
+  std::istream& in = path == "-" ? std::cin : file;
+  const std::string name = path == "-" ? std::string("<stdin>") : path;
+
+  std::vector<std::string> header;  // CSV columns, once read
+  bool csv = false, decided = false;
+  std::size_t line_number = 0, refused_count = 0;
+  std::vector<point_text> batch;
+  std::vector<std::string> batch_errors;  // parse errors, per batch entry ("" if none)
+
+  auto flush = [&] {
+    std::vector<json> results(batch.size());
+    std::vector<char> refused(batch.size(), 0);
+    std::atomic<std::size_t> next{0};
+    auto work = [&] {
+      for (std::size_t i; (i = next++) < batch.size();) {
+        if (!batch_errors[i].empty()) {
+          results[i] = json{{"line", batch[i].line}, {"error", batch_errors[i]}};
+          refused[i] = 1;
+          continue;
+        }
+        bool r = false;
+        results[i] = detail::solve_point(batch[i], o, r);
+        refused[i] = r;
+      }
+    };
+    const unsigned n = std::min<std::size_t>(o.threads, batch.size());
+    if (n <= 1) {
+      work();
+    } else {
+      std::vector<std::thread> pool;
+      for (unsigned t = 0; t < n; ++t) pool.emplace_back(work);
+      for (auto& t : pool) t.join();
+    }
+    for (std::size_t i = 0; i < batch.size(); ++i) {
+      out << results[i].dump() << '\n';
+      if (refused[i]) {
+        ++refused_count;
+        std::cerr << "viscor: error: " << name << ":" << batch[i].line << ": " << results[i]["error"].get<std::string>()
+                  << '\n';
+      }
+    }
+    out << std::flush;
+    batch.clear();
+    batch_errors.clear();
+  };
+
+  std::string line;
+  const std::size_t batch_size = o.threads <= 1 ? 1 : 4 * o.threads;
+  while (std::getline(in, line)) {
+    ++line_number;
+    if (line.find_first_not_of(" \t\r") == std::string::npos || line[line.find_first_not_of(" \t")] == '#') continue;
+    if (!decided) {
+      decided = true;
+      csv = line[line.find_first_not_of(" \t")] != '{';
+      if (csv) {
+        header = detail::split_csv(line);
+        point_text probe;
+        for (const auto& column : header)
+          if (!detail::point_field(probe, column))
+            throw invalid_parameter("--points: " + name + ":" + std::to_string(line_number) + ": unknown column '" +
+                                    column + "' (known: " + detail::point_fields + ")");
+        continue;
+      }
+    }
+    point_text p;
+    p.line = line_number;
+    std::string problem;
+    try {
+      if (csv) {
+        const auto fields = detail::split_csv(line);
+        if (fields.size() != header.size())
+          throw invalid_parameter(std::to_string(fields.size()) + " fields where the header names " +
+                                  std::to_string(header.size()));
+        for (std::size_t c = 0; c < header.size(); ++c)
+          if (!fields[c].empty()) *detail::point_field(p, header[c]) = fields[c];
+      } else {
+        p = detail::parse_json_point(line, name + ":" + std::to_string(line_number), line_number);
+      }
+    } catch (const error& e) {
+      problem = e.what();
+      if (problem.empty()) problem = "unreadable line";
+    }
+    batch.push_back(p);
+    batch_errors.push_back(problem);
+    if (batch.size() >= batch_size) flush();
+  }
+  flush();
+  if (line_number == 0) throw invalid_parameter("--points: " + name + " holds no points");
+  return refused_count;
+}
+
+}  // namespace viscor::cli

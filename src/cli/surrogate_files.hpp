@@ -1,0 +1,51 @@
+// Where the CLI finds the committed surrogates: $VISCOR_SURROGATE_DIR, else
+// <data directory>/surrogates (data_directory.hpp: installed share/viscor or the
+// source tree's reference_data), and the JSON of a surrogate evaluation (docs/surrogate.md).
+#pragma once
+
+#include "cli_common.hpp"
+#include "data_directory.hpp"
+
+#include <viscor/surrogate/cor_surrogate.hpp>
+
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <string>
+
+namespace viscor::cli {
+
+inline std::string surrogate_directory() {
+  if (const char* dir = std::getenv("VISCOR_SURROGATE_DIR"); dir && *dir) return dir;
+  return data_directory() + "/surrogates";
+}
+
+/// The committed surrogate of a named law, or nullptr (custom law, or no file).
+inline const surrogate::cor_surrogate* find_surrogate(const contact_law& law) {
+  static std::map<std::string, std::unique_ptr<surrogate::cor_surrogate>> cache;
+  if (law.name.empty()) return nullptr;
+  auto it = cache.find(law.name);
+  if (it == cache.end()) {
+    const std::string path = surrogate_directory() + "/" + law.name + ".surrogate";
+    std::unique_ptr<surrogate::cor_surrogate> s;
+    if (std::filesystem::exists(path)) s = std::make_unique<surrogate::cor_surrogate>(surrogate::read_cor_surrogate(path));
+    it = cache.emplace(law.name, std::move(s)).first;
+  }
+  return it->second.get();
+}
+
+/// error_bound of a surrogate value: what is claimed and what the claim is.
+inline json surrogate_bound_json(const surrogate::cor_surrogate& s) {
+  if (!s.bound.verified()) return {{"kind", "none: this surrogate file was never verified (no bound is claimed)"}};
+  return {{"kind", "measured maximum over the certified verification points x safety factor"},
+          {"safety_factor", s.bound.safety_factor},
+          {"abs_e", s.bound.abs_e},
+          {"abs_e_applies", "where e >= 1e-2"},
+          {"abs_e_squared", s.bound.abs_e_squared},
+          {"rel_one_minus_e", s.bound.rel_one_minus_e},
+          {"rel_one_minus_e_applies", "where gamma <= 1e-2 and e >= 1e-2"},
+          {"outcome", "correct except within relative 1e-10 in g of the sticking threshold"}};
+}
+
+}  // namespace viscor::cli

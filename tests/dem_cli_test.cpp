@@ -1,0 +1,93 @@
+// viscor dem (src/cli/cmd_dem.cpp): the deck fields as decimal strings that give
+// the target e back through the library's reverse map, the reverse table, the
+// snippet, and bad input: exit 2, the offending value named, no output file.
+#include <viscor/dem/dem_calibration.hpp>
+
+#include "test_utils.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <string>
+
+namespace {
+
+using viscor::test::run_cli;
+
+bool cli_built() { return std::string(VISCOR_CLI_PATH).size() > 0; }
+
+const std::string steel = " --youngs-modulus 2e11 --poisson-ratio 0.3 --radius 1e-3 --density 7800";
+
+TEST(CliDem, DeckFieldsReproduceTheTarget) {
+  if (!cli_built()) GTEST_SKIP() << "viscor CLI not built";
+  for (const char* model : {"lammps --damping velocity", "lammps --damping viscoelastic", "lammps --damping tsuji",
+                            "liggghts --damping hertz"}) {
+    SCOPED_TRACE(model);
+    const auto r = run_cli(std::string("dem ") + model + steel + " --target-e 0.7 --v0 0.01 --gravity 9.81 --json");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    for (const char* field : {"youngs_modulus", "damping", "poisson_ratio"}) ASSERT_TRUE(j["deck"][field].is_string());
+    const auto& m = viscor::dem::find_dem_model(j["code"], j["damping"]);
+    viscor::dem::dem_impact<double> impact;
+    impact.bead = {2e11, 0.3, 1e-3, 7800}, impact.v0 = 0.01, impact.gravity = 9.81;
+    const double deck = std::stod(j["deck"]["damping"].get<std::string>());
+    EXPECT_NEAR(viscor::dem::e_for_deck(m, impact, deck).e, 0.7, 1e-10);
+    // the wall modulus as the code needs it
+    const double E = std::stod(j["deck"]["youngs_modulus"].get<std::string>());
+    EXPECT_NEAR(E, j["code"] == "lammps" ? 2 * 2e11 / 1.3 : 2e11, 1e-15 * E);
+    EXPECT_NE(j["snippet"].get<std::string>().find(j["deck"]["damping"].get<std::string>()), std::string::npos);
+    if (m.deck_kind == viscor::dem::deck_damping_kind::coefficient_of_restitution) {
+      ASSERT_TRUE(j.contains("builtin_e"));
+      const double builtin = std::stod(j["builtin_e"].get<std::string>());
+      EXPECT_NEAR(std::stod(j["builtin_error_percent_of_one_minus_e"].get<std::string>()),
+                  100 * (builtin - 0.7) / 0.3, 1e-9);
+    } else {
+      EXPECT_FALSE(j.contains("builtin_e"));
+    }
+  }
+}
+
+TEST(CliDem, ReverseTableListsSpeedsAndLoads) {
+  if (!cli_built()) GTEST_SKIP() << "viscor CLI not built";
+  const auto r = run_cli("dem lammps --damping tsuji" + steel + " --deck-damping 0.8 --gravity 9.81 --speeds 0.01,1 --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["table"].size(), 4u);  // 2 speeds x (no load, gravity)
+  viscor::dem::dem_impact<double> impact;
+  impact.bead = {2e11, 0.3, 1e-3, 7800};
+  for (const auto& row : j["table"]) {
+    impact.v0 = std::stod(row["v0"].get<std::string>());
+    impact.gravity = std::stod(row["gravity"].get<std::string>());
+    const double e = viscor::dem::e_for_deck(viscor::dem::find_dem_model("lammps", "tsuji"), impact, 0.8).e;
+    EXPECT_NEAR(std::stod(row["e"].get<std::string>()), e, 1e-14);
+  }
+}
+
+TEST(CliDem, BadInputExitsTwoNamingTheValue) {
+  if (!cli_built()) GTEST_SKIP() << "viscor CLI not built";
+  const std::string tail = steel + " --v0 1 --gravity 9.81";
+  struct bad { std::string args, named; };
+  for (const bad& b : {bad{"dem foo --damping tsuji --target-e 0.5" + tail, "'foo'"},
+                       bad{"dem lammps --damping wiggle --target-e 0.5" + tail, "'wiggle'"},
+                       bad{"dem lammps --damping coeff_restitution --target-e 0.5" + tail, "coeff_restitution"},
+                       bad{"dem lammps --damping tsuji --target-e 1.5" + tail, "target_e"},
+                       bad{"dem lammps --damping tsuji --target-e 0" + tail, "target_e"},
+                       bad{"dem lammps --damping tsuji --target-e 0.5 --contact floor" + tail, "'floor'"},
+                       bad{"dem lammps --damping tsuji --target-e 0.5" + steel + " --v0 1", "--gravity"},
+                       bad{"dem liggghts --damping hertz --deck-damping 1.5" + tail, "1.5"},
+                       // needs less damping than the tsuji polynomial gives at e = 1 (0.0003)
+                       bad{"dem lammps --damping tsuji --target-e 0.9999" + steel + " --v0 1 --gravity 0", "target_e = 9.999"},
+                       // a pulling force: the bead cannot lose enough energy
+                       bad{"dem lammps --damping velocity --target-e 0.01" + steel + " --v0 0.01 --gravity 9.81 --force -1", "target_e"}}) {
+    SCOPED_TRACE(b.args);
+    const std::string out_file = ::testing::TempDir() + "viscor_dem_bad.json";
+    std::filesystem::remove(out_file);
+    const auto r = run_cli(b.args + " -o " + out_file);
+    EXPECT_EQ(r.status, 2) << r.err;
+    EXPECT_NE(r.err.find(b.named), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(out_file));
+  }
+}
+
+}  // namespace

@@ -1,0 +1,61 @@
+#!/usr/bin/env bash
+# Runs every command of the README's ```sh blocks from the build tree, so the README
+# cannot drift (issue 13). `viscor` is the build tree's tool (a PATH entry), and
+# `./build/viscor` too; commands run in a scratch directory that sees the repository's
+# docs/, tools/ and reference_data/. The two set-up commands are checked, not run
+# (they install and build): the test command must be .ci/run's line exactly, the
+# main-job command must build only viscor_cli, and what it runs after the build is run.
+# The README's ```cpp block must be examples/certified_cor.cpp verbatim.
+# Usage: readme_test.sh SOURCE_DIR BUILD_DIR
+set -uo pipefail
+src=$1
+build=$2
+scratch=$(mktemp -d)
+trap 'rm -rf "$scratch"' EXIT
+mkdir "$scratch/bin"
+ln -s "$build/viscor" "$scratch/bin/viscor"
+for d in docs tools reference_data examples; do ln -s "$src/$d" "$scratch/$d"; done
+ln -s "$build" "$scratch/build"
+export PATH="$scratch/bin:$PATH"
+unset VISCOR_DATA VISCOR_ERROR_MAPS
+cd "$scratch"
+
+failures=0
+fail() { echo "README: $*" >&2; failures=$((failures + 1)); }
+
+setup_prefix='bash tools/install-deps.sh && cmake -S . -B build && cmake --build build -j2'
+ci_line=$(grep -E '^bash tools/install-deps.sh' "$src/.ci/run")
+commands=0
+# Every line of every ```sh block, with backslash continuations joined.
+while IFS= read -r command; do
+  [ -z "$command" ] && continue
+  commands=$((commands + 1))
+  if [[ $command == "bash tools/install-deps.sh"* ]]; then
+    [[ $command == "$setup_prefix"* ]] || fail "set-up command not of the form '$setup_prefix ...': $command"
+    tail=${command##*&& }
+    if [[ $tail == ctest* ]]; then
+      [ "$command" = "$ci_line" ] || fail "the test command differs from .ci/run:
+  README: $command
+  .ci/run: $ci_line"
+    else
+      [[ $command == "$setup_prefix --target viscor_cli &&"* ]] || fail "the main-job command must build only viscor_cli: $command"
+      command=$tail
+    fi
+    [[ $tail == ctest* ]] && continue
+  fi
+  echo "+ $command"
+  if ! bash -o pipefail -c "$command" > out.txt 2> err.txt; then
+    fail "failed: $command"
+    cat err.txt >&2
+  fi
+done < <(awk '/^```sh$/ {inside = 1; next} /^```/ {inside = 0; next}
+              inside { line = $0; sub(/[ \t]+#.*$/, "", line); if (line ~ /^[ \t]*#/ || line ~ /^[ \t]*$/) next;
+                       if (line ~ /\\$/) { sub(/\\$/, "", line); pending = pending line; next }
+                       print pending line; pending = "" }' "$src/README.md")
+[ "$commands" -ge 5 ] || fail "only $commands commands found"
+
+awk '/^```cpp$/ {inside = 1; next} /^```/ {inside = 0} inside' "$src/README.md" > readme_snippet.cpp
+diff -u "$src/examples/certified_cor.cpp" readme_snippet.cpp >&2 || fail "the C++ snippet is not examples/certified_cor.cpp"
+
+echo "README: $commands commands, $failures failures"
+[ "$failures" -eq 0 ]
