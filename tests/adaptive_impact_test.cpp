@@ -227,6 +227,28 @@ TEST(adaptive_impact, at_rest_without_a_trapping_sector_is_undecided) {
   EXPECT_TRUE(std::isnan(r.contact_time));
 }
 
+TEST(adaptive_impact, no_turn_back_from_the_midpoint_nodes_alone) {
+  // Linear law, g = 0.5, gamma = 1.9999: the bead sticks, turning back only at
+  // tau ~ 316 (exact), when its motion about u* is ~e^-300 below the precision. The
+  // midpoint nodes of a tau step (low-order values) showed v changing sign at tau ~ 27
+  // where the accurate states have v ~ -2e-11: that was reported as the turn back.
+  const auto exact = exact_linear(1.9999, 0.5);
+  ASSERT_EQ(exact.outcome, impact_outcome::stick);
+  ASSERT_TRUE(exact.contact_time && *exact.contact_time > 300);
+  const auto r = solve_impact_adaptive(law_by_name("linear"), 1.9999, 0.5);
+  if (r.outcome == impact_outcome::stick) {
+    EXPECT_NEAR(r.contact_time, *exact.contact_time, 1e-6 * *exact.contact_time);
+  } else {
+    EXPECT_EQ(r.outcome, impact_outcome::undecided);
+    EXPECT_TRUE(std::isnan(r.contact_time));
+  }
+  // A turn back that is resolvable is still found (gamma = 1.93: exact T ~ 13.94).
+  const auto resolvable = exact_linear(1.93, 0.5);
+  const auto r2 = solve_impact_adaptive(law_by_name("linear"), 1.93, 0.5);
+  ASSERT_EQ(r2.outcome, impact_outcome::stick);
+  EXPECT_NEAR(r2.contact_time, *resolvable.contact_time, 1e-8 * *resolvable.contact_time);
+}
+
 TEST(adaptive_impact, creep_into_the_origin_is_proven_by_the_barrier) {
   // Hertz with linear damping, gamma = 1.5, g = 0: the bead creeps into u = 0 along a
   // power law, so its energy stays above the tolerance for millions of steps (the

@@ -303,7 +303,17 @@ class adaptive_impact_solver {
   /// The whole impact: compression in s, then tau mode and the way out in s until
   /// the bead leaves (rebound) or sticks.
   raw_result solve() {
-    tau_point<W> at = to_tau(compress_in_s());
+    bool trapped = false;
+    tau_point<W> at = to_tau(compress_in_s(trapped));
+    if (trapped) {
+      // Creeps up to u* while still compressing: never reaches it, never turns back.
+      raw_result r;
+      r.outcome = impact_outcome::stick;
+      r.contact_time = r.time_of_max = std::numeric_limits<W>::infinity();
+      r.max_compression = pow(m_law.g, 1 / m_law.alpha);
+      r.steps = m_steps;
+      return r;
+    }
     compression_record<W> compression;
     for (;;) {
       const tau_result<W> t = tau_mode(at, compression);
@@ -336,9 +346,13 @@ class adaptive_impact_solver {
 
   // ---- phase 1: compression in s ----
   // Takes nothing (contact starts at u = 0 with v = 1); steps s up from 0 until
-  // u |u''| > v^2/2. Returns the state there, where the tau mode takes over (the
-  // only way this phase ends, short of a step-budget error).
-  s_point<W> compress_in_s() {
+  // u |u''| > v^2/2, where the tau mode takes over, or (g > 0) until the state is
+  // in the trapping sector below u* (`trapped`: the bead creeps up to u* and sticks).
+  // Returns the state where it stopped.
+  // NOTE (issue 18 item 8): with strong damping under a load the bead is pushed in
+  // at its terminal speed and creeps up to u* without u |u''| ever exceeding v^2/2;
+  // the steps, bounded by the fast damping scale, would exhaust any budget.
+  s_point<W> compress_in_s(bool& trapped) {
     using std::abs;
     using std::pow;
     s_point<W> p{W(0), {W(0), W(1), W(0)}};
@@ -355,6 +369,14 @@ class adaptive_impact_solver {
       if (!accepted(m_s_int.try_step(rhs_s_up, p.s, p.y, h), p.s)) continue;
       accumulate_error(m_s_int);
       if (switch_to_tau(p.s, p.y[1])) return p;
+      if (m_law.g > 0) {
+        typename regularised_law<W>::powers q;
+        m_law.eval(p.s, q);
+        if (creeps_to_equilibrium(p.s, m_law.velocity(p.y[1], q)) == rest_verdict::trapped) {
+          trapped = true;
+          return p;
+        }
+      }
     }
   }
 
@@ -384,8 +406,15 @@ class adaptive_impact_solver {
       }
       accumulate_error(m_t_int);
       W turned_back_at = 0;
-      if (scan_turning_points(start, at.z, compression, turned_back_at)) {
+      const turn_scan scan = scan_turning_points(start, at.z, compression, turned_back_at);
+      if (scan == turn_scan::turned_back) {
         out.outcome = tau_outcome::turns_back, out.contact_time = turned_back_at;
+        break;
+      }
+      if (scan == turn_scan::not_located) {
+        // The bead turned back within the step (v > 0 at its accurate end after
+        // maximal compression), but the turn could not be told from maximal compression.
+        out.outcome = tau_outcome::undecided, out.contact_time = nan;
         break;
       }
       typename regularised_law<W>::powers p;
@@ -439,9 +468,11 @@ class adaptive_impact_solver {
 
   // Sign changes of v on the last tau step's nodes (the last replaced by the
   // accurate end state): maximal compression (+ to -) updates `compression`;
-  // turning back (- to +) after it returns true with its time in `turned_back_at`.
-  bool scan_turning_points(const tau_point<W>& start, const impact_state<W>& end, compression_record<W>& compression,
-                           W& turned_back_at) {
+  // turning back (- to +) after it returns turned_back with its time in `turned_back_at`.
+  enum class turn_scan { none, turned_back, not_located };
+  turn_scan scan_turning_points(const tau_point<W>& start, const impact_state<W>& end,
+                                compression_record<W>& compression, W& turned_back_at) {
+    using std::abs;
     const auto& nodes = m_t_int.nodes();
     m_v_nodes.resize(nodes.size());
     for (std::size_t m = 0; m + 1 < nodes.size(); ++m) m_v_nodes[m] = velocity_of(nodes[m]);
@@ -457,12 +488,26 @@ class adaptive_impact_solver {
         compression.overlap = p.u();
         compression.passed = true;
       } else if (compression.passed && v_prev < 0 && v_next >= 0) {
+        // NOTE: the nodes are low-order midpoint values, not the step's accurate result:
+        // where |v| is far below their error (a nearly critically damped settling, linear
+        // law, gamma = 1.9999, g = 0.5: |v| ~ 1e-11 at tau ~ 27) they show sign changes
+        // that the accurate states do not have. A turn counts only if locating it confirms it.
+        // A turn back is also where u'' = g - u^alpha > 0 at v = 0 (u below u*): a
+        // root found above u* is maximal compression again (same step) or noise.
+        bool confirmed = false;
         impact_state<W> at;
-        turned_back_at = locate_turning_point(start.tau, start.z, m, at);
-        return true;
+        const W t = locate_turning_point(start.tau, start.z, m, at, &confirmed);
+        typename regularised_law<W>::powers p;
+        m_law.eval(at[0], p);
+        const W pull = m_law.g - p.ua();
+        if (confirmed && t > compression.time && pull > 64 * epsilon<W>() * (abs(m_law.g) + p.ua())) {
+          turned_back_at = t;
+          return turn_scan::turned_back;
+        }
+        if (m_v_nodes.back() > 0) return turn_scan::not_located;
       }
     }
-    return false;
+    return turn_scan::none;
   }
 
   // ---- phase 3: the way out in s ----
@@ -641,8 +686,12 @@ class adaptive_impact_solver {
 
   // ---- events and rest ----
   // Newton on the step length for v = 0 between nodes m-1 and m of the last tau
-  // step from (tau0, z0). Returns the time of the turning point and the state there in `at`.
-  W locate_turning_point(const W& tau0, const impact_state<W>& z0, std::size_t m, impact_state<W>& at) {
+  // step from (tau0, z0). Returns the time of the turning point and the state there in `at`;
+  // `confirmed` (if given) says whether the accurate states show the root: Newton
+  // converged, an iterate has v of the other sign than at tau0, or the best |v| is
+  // within the rounding noise of v = w - gamma u^beta.
+  W locate_turning_point(const W& tau0, const impact_state<W>& z0, std::size_t m, impact_state<W>& at,
+                         bool* confirmed = nullptr) {
     using std::abs;
     using std::sqrt;
     auto rhs_t = [this](const W& t_, const impact_state<W>& z_, impact_state<W>& d) { return t_rhs(t_, z_, d); };
@@ -665,33 +714,49 @@ class adaptive_impact_solver {
     // damped settling: linear law, gamma = 1.93, g = 87) v is rounding noise over a
     // band of ~noise/|u''| and Newton wanders inside it with corrections far above
     // sqrt(eps); eight iterates without a smaller |v| end the search at the best one.
-    W best_h = h, best_v = -1, previous_delta = -1;
+    W best_h = h, best_v = -1, previous_delta = -1, noise = 0;
     int since_best = 0;
+    const bool starts_positive = velocity_of(z0) > 0;
+    bool crossed = false;
+    auto found = [&](bool sure) {
+      if (confirmed) *confirmed = sure || crossed || best_v <= noise;
+    };
     for (int it = 0; it < budget; ++it) {
       if (!m_t_int.fixed_step(rhs_t, tau0, z0, h, columns, at))
         throw convergence_error("solve_impact_adaptive: event location left the domain for " + m_where);
       typename regularised_law<W>::powers p;
       m_law.eval(at[0], p);
       const W v = m_law.velocity(at[1], p);
+      if (v == 0 || (v > 0) != starts_positive) crossed = true;
+      // Rounding of v = w - gamma u^beta (64 ulps of the larger term) and the error carried in w.
+      noise = 64 * (epsilon<W>() * (abs(at[1]) + m_law.gamma * p.ub()) + m_error);
       if (best_v < 0 || abs(v) < best_v) {
         best_v = abs(v), best_h = h, since_best = 0;
       } else if (++since_best >= 8) {
         h = best_h;
         m_t_int.fixed_step(rhs_t, tau0, z0, h, columns, at);
+        found(false);
         return tau0 + h;
       }
       const W u_acc = m_law.g - p.ua() - m_law.gamma_beta * p.ub1() * v;  // u''
-      if (v == 0 || u_acc == 0) return tau0 + h;
+      if (v == 0 || u_acc == 0) {
+        found(v == 0);
+        return tau0 + h;
+      }
       W next = h - v / u_acc;
       if (next < 0) next = h / 2;
       if (next > H) next = (h + H) / 2;
       const W delta = abs(next - h);
       const W scale = abs(tau0) + abs(h);
-      if (delta <= sqrt_eps * scale / 16) return tau0 + next;
+      if (delta <= sqrt_eps * scale / 16) {
+        found(true);
+        return tau0 + next;
+      }
       const bool stalled = previous_delta >= 0 && delta >= previous_delta / 2 && delta <= sqrt_eps * scale;
       if (stalled) {
         h = best_h;
         m_t_int.fixed_step(rhs_t, tau0, z0, h, columns, at);
+        found(false);
         return tau0 + h;
       }
       previous_delta = delta;
