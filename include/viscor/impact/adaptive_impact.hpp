@@ -481,10 +481,18 @@ class adaptive_impact_solver {
       const W& v_prev = m_v_nodes[m - 1];
       const W& v_next = m_v_nodes[m];
       if (!compression.passed && v_prev > 0 && v_next <= 0) {
+        // As for a turn back (below): the nodes may show a sign change the accurate
+        // states do not have. Maximal compression needs u'' = g - u^alpha <= 0 at v = 0;
+        // a sign change of the accurate v over the step is one whatever Newton found.
+        bool confirmed = false;
         impact_state<W> at;
-        compression.time = locate_turning_point(start.tau, start.z, m, at);
+        const W t = locate_turning_point(start.tau, start.z, m, at, &confirmed);
         typename regularised_law<W>::powers p;
         m_law.eval(at[0], p);
+        const W push = m_law.g - p.ua();
+        const bool accurate_sign_change = velocity_of(start.z) > 0 && !(m_v_nodes.back() > 0);
+        if (!accurate_sign_change && !(confirmed && push <= 64 * epsilon<W>() * (abs(m_law.g) + p.ua()))) continue;
+        compression.time = t;
         compression.overlap = p.u();
         compression.passed = true;
       } else if (compression.passed && v_prev < 0 && v_next >= 0) {
@@ -504,7 +512,10 @@ class adaptive_impact_solver {
           turned_back_at = t;
           return turn_scan::turned_back;
         }
-        if (m_v_nodes.back() > 0) return turn_scan::not_located;
+        // The accurate v went from < 0 (after maximal compression, at the step's
+        // start) to > 0 at its end: a turn back that Newton could not isolate.
+        if (compression.time <= start.tau && velocity_of(start.z) < 0 && m_v_nodes.back() > 0)
+          return turn_scan::not_located;
       }
     }
     return turn_scan::none;
