@@ -10,6 +10,7 @@
 
 #include <array>
 #include <cmath>
+#include <limits>
 
 namespace {
 
@@ -188,6 +189,36 @@ TEST(adaptive_integrator, rejects_a_step_that_is_too_long) {
   EXPECT_EQ(gbs.try_step(f, t, y, h), gbs_status::rejected);
   EXPECT_LT(h, 1);
   EXPECT_EQ(t, 0);
+}
+
+// Issue 18: a non-finite state or derivative at a step's start is an error outcome
+// (no step size can cure it), not a rejection retried until the step underflows.
+TEST(adaptive_integrator, non_finite_start_is_an_error_outcome) {
+  using state = std::array<double, 1>;
+  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  gbs_integrator<double, 1> gbs(1e-12, state{1e-12}, 8);
+  auto nan_rhs = [&](const double&, const state&, state& d) { d[0] = nan; return true; };
+  double t = 0, h = 0.125;
+  state y{1.0};
+  EXPECT_EQ(gbs.try_step(nan_rhs, t, y, h), gbs_status::non_finite);
+  EXPECT_EQ(t, 0.0);
+  EXPECT_EQ(y[0], 1.0);
+  EXPECT_EQ(h, 0.125);
+  auto one = [](const double&, const state&, state& d) { d[0] = 1; return true; };
+  state bad{inf};
+  EXPECT_EQ(gbs.try_step(one, t, bad, h), gbs_status::non_finite);
+  // Non-finite values further into the step are a matter of its length: shorter, then accepted.
+  auto blows_up = [&](const double& s, const state&, state& d) { d[0] = s > 0.05 ? nan : 1.0; return true; };
+  y = {0.0};
+  gbs_status st = gbs_status::rejected;
+  for (int tries = 0; tries < 20 && st != gbs_status::accepted; ++tries) {
+    st = gbs.try_step(blows_up, t, y, h);
+    EXPECT_NE(st, gbs_status::non_finite);
+  }
+  EXPECT_EQ(st, gbs_status::accepted);
+  EXPECT_GT(t, 0.0);
+  EXPECT_LE(t, 0.05);
+  EXPECT_DOUBLE_EQ(y[0], t);
 }
 
 }  // namespace

@@ -100,6 +100,17 @@ TEST(certification, near_the_sticking_threshold_absolute_digits_are_reported) {
   EXPECT_LE(abs(c.e - exact.e), std::pow(10.0, -c.absolute_digits_e));
 }
 
+TEST(certification, an_undecided_outcome_is_uncertified) {
+  // Linear law, g = 0, gamma = 1.9999: e ~ 4e-137, which the adaptive method in double
+  // cannot tell from a creep into u = 0 (undecided, contact_time NaN).
+  const auto c = certify<double>(law_by_name("linear"), 1.9999, 0.0);
+  ASSERT_EQ(c.computations.size(), 3u);
+  EXPECT_EQ(c.computations[2].outcome, impact_outcome::undecided);
+  EXPECT_FALSE(c.outcome_certified);
+  EXPECT_EQ(c.digits, 0);
+  EXPECT_EQ(c.computations[2].digits_contact_time, 0);
+}
+
 TEST(certification, sticking_outcome_is_certified_with_exact_e) {
   const auto c = certify<double>(law_by_name("kuwabara_kono"), 0.06, 4.0);  // report Fig. 4
   EXPECT_TRUE(c.outcome_certified);

@@ -77,6 +77,21 @@ TEST(CliCor, BadInputNamesTheValue) {
 }
 
 // Issue 7 through the CLI: a stuck bead's stop overlap (overdamped: creeps to u = g).
+TEST(CliCor, UndecidedOutcomeIsPrinted) {
+  if (!cli_built()) GTEST_SKIP() << "viscor CLI not built";
+  // Linear law, g = 0, gamma = 1.9999: e ~ 4e-137, beyond the adaptive method in double.
+  const std::string args = "cor --model linear --gamma 1.9999 --g 0 --method adaptive";
+  const auto r = run_cli(args + " --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["outcome"], "undecided");
+  EXPECT_EQ(j["contact_time"], "nan");
+  const auto text = run_cli(args);
+  ASSERT_EQ(text.status, 0) << text.err;
+  EXPECT_EQ(summary_field(text.out, "outcome"), "undecided");
+  EXPECT_EQ(summary_field(text.out, "T_stop"), "unknown");
+}
+
 TEST(CliCor, StuckBeadReportsWhereItStops) {
   if (!cli_built()) GTEST_SKIP() << "viscor CLI not built";
   const auto r = run_cli("cor --model linear --gamma 3 --g 0.5 --json");

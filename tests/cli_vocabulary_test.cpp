@@ -11,6 +11,8 @@
 //   refused (exit 2, no output file).
 #include "test_utils.hpp"
 
+#include <viscor/core/outcome.hpp>
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -140,6 +142,19 @@ TEST(CliVocabulary, EveryJsonFieldIsInTheSchema) {
     collect_keys(nlohmann::json::parse(r.out), keys);
     for (const auto& k : keys) EXPECT_TRUE(units.count(k)) << "field '" << k << "' is not in docs/json-schema.md";
   }
+}
+
+// Issue 18 item 9: the schema's `outcome` row names every value the JSON can carry.
+TEST(CliVocabulary, SchemaListsEveryOutcome) {
+  std::ifstream in(std::string(VISCOR_SOURCE_DIR) + "/docs/json-schema.md");
+  ASSERT_TRUE(in) << "docs/json-schema.md";
+  std::string row;
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind("| `outcome` |", 0) == 0) row = line;
+  ASSERT_FALSE(row.empty()) << "no `outcome` row in docs/json-schema.md";
+  using viscor::impact_outcome;
+  for (auto o : {impact_outcome::rebound, impact_outcome::stick, impact_outcome::undecided})
+    EXPECT_NE(row.find("`" + std::string(viscor::to_string(o)) + "`"), std::string::npos) << row;
 }
 
 TEST(CliVocabulary, SameQuantitySameNameInEveryCommand) {

@@ -111,12 +111,17 @@ struct cor_command {
 
       text << "gamma      " << number(gamma_value) << "\n"
            << "g          " << number(g_value) << "\n"
-           << "outcome    " << to_string(r.outcome) << " (contact ends at zero overlap u = 0)\n"
+           << "outcome    " << to_string(r.outcome)
+           << (r.outcome == impact_outcome::undecided
+                   ? " (rebound or stick cannot be decided at this precision: e = 0 to within the error below)\n"
+                   : " (contact ends at zero overlap u = 0)\n")
            << "e          " << number(r.e) << "\n"
            << "1 - e      " << number(r.one_minus_e) << "\n"
-           << (r.outcome == impact_outcome::rebound ? "T_f        " : "T_stop     ") << number(r.contact_time)
+           << (r.outcome == impact_outcome::rebound ? "T_f        " : "T_stop     ")
+           << (r.outcome == impact_outcome::undecided ? std::string("unknown") : number(r.contact_time))
            << " (scaled)\n";
-      if (scales) text << "time       " << number(Real(r.contact_time * scales->time_scale)) << " s (contact)\n";
+      if (scales && r.outcome != impact_outcome::undecided)
+        text << "time       " << number(Real(r.contact_time * scales->time_scale)) << " s (contact)\n";
       text << "u_max      " << number(r.max_compression) << " at tau = " << number(r.time_of_max_compression) << "\n"
            << (r.outcome == impact_outcome::stick ? "u_stop     " + number(r.stop_overlap) + " (where u' returns to 0, or the rest position)\n" : std::string())
            << "error      " << to_decimal_string(r.error_estimate, 3) << " (estimated, absolute, on e)\n"

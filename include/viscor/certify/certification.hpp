@@ -200,7 +200,9 @@ void certify_against_reference(const contact_law& law, const Real& gamma, const 
   out.outcome = ref.outcome;
   out.e = entry.e, out.one_minus_e = entry.one_minus_e;
   out.contact_time = entry.contact_time, out.max_compression = entry.max_compression;
-  out.outcome_certified = taylor.outcome == ref.outcome && adaptive.outcome == ref.outcome;
+  // An undecided outcome (any of the three) is never certified, even if all agree on it.
+  out.outcome_certified = taylor.outcome == ref.outcome && adaptive.outcome == ref.outcome &&
+                          ref.outcome != impact_outcome::undecided;
 
   // Agreement of each working-precision computation with the reference, capped at `working`.
   out.digits_e = out.digits_one_minus_e = out.digits_contact_time = out.digits_max_compression = working;

@@ -34,7 +34,8 @@ struct impact_result {
   Real one_minus_e = 1;  ///< 1 - e at full relative precision (from the dissipated energy, eq. 6)
   impact_outcome outcome = impact_outcome::rebound;
   /// T_f for a rebound; for a stick, the time u' vanishes again with u > 0 (the
-  /// bead stops separating), +infinity if it creeps to rest without turning back.
+  /// bead stops separating), +infinity if it creeps to rest without turning back;
+  /// NaN (unknown) when undecided.
   Real contact_time = 0;
   Real max_compression = 0;          ///< u_max
   /// For a stick, the overlap where the bead stops separating: u at contact_time,

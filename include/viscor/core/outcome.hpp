@@ -8,9 +8,19 @@ namespace viscor {
 /// rebound: the bead leaves the wall (u = 0 with u' < 0) and e = -u'(T_f) > 0.
 /// stick: it never leaves; e = 0. NOTE: every result says which end-of-contact
 /// criterion it uses: viscor ends contact at zero overlap u = 0, as the report does.
-enum class impact_outcome { rebound, stick };
+/// undecided: the solver cannot tell at its working precision whether or when the
+/// contact ends (e is 0 to within the result's error_estimate; contact_time is NaN).
+/// Never certified: certify counts it as a disagreement.
+enum class impact_outcome { rebound, stick, undecided };
 
 /// The outcome's name as written in tables and JSON.
-inline std::string_view to_string(impact_outcome o) { return o == impact_outcome::rebound ? "rebound" : "stick"; }
+inline std::string_view to_string(impact_outcome o) {
+  switch (o) {
+    case impact_outcome::rebound: return "rebound";
+    case impact_outcome::stick: return "stick";
+    case impact_outcome::undecided: return "undecided";
+  }
+  return "undecided";
+}
 
 }  // namespace viscor

@@ -22,7 +22,7 @@
 // tau -> s (on the way out) when r < 1/8.
 //
 // Phases (adaptive_impact_solver::solve): compress_in_s (s from 0 up) -> tau_mode,
-// which ends in {turns_back, creeps, leaves}; leaves -> exit_in_s (s down to 0),
+// which ends in {turns_back, creeps, undecided, leaves}; leaves -> exit_in_s (s down to 0),
 // which ends in {done, back_to_tau}; back_to_tau -> tau_mode again.
 //
 // Events: sign changes of v are detected on the nodes of the finest midpoint
@@ -31,7 +31,14 @@
 // with u > 0 after maximal compression (e = 0, contact_time = that time); the
 // energy E = v^2/2 + u^(alpha+1)/(alpha+1) - g u never increases and equals
 // e^2/2 at u = 0, so E < 0 proves sticking and sqrt(2E) bounds e; creeping into
-// the equilibrium u* = g^(1/alpha) without turning back gives contact_time = +inf.
+// the equilibrium u* = g^(1/alpha) (g > 0, a trapping sector) or into u = 0
+// (g = 0, a barrier) without turning back gives contact_time = +inf.
+// Undecided (impact_outcome::undecided, contact_time NaN): what the solver cannot
+// prove at its working precision: g = 0 with e <= sqrt(2E) below the tolerance but
+// no barrier, or a state at rest to half the precision without a trapping sector
+// (a turn back, if any, is below the precision).
+// A non-finite state or derivative at the start of a GBS step is an error
+// (convergence_error), not a step to retry.
 //
 // Exponents that are not such rationals (or need Q > max_regularising_denominator)
 // use Q = 1 and real powers: u^alpha is then not analytic at u = 0, the error
@@ -236,7 +243,15 @@ struct compression_record {
 enum class tau_outcome {
   turns_back,  ///< v = 0 again with u > 0 after maximal compression: the bead sticks at that time
   creeps,      ///< the bead creeps to rest without turning back: it sticks, contact_time = +inf
+  undecided,   ///< at rest, or e below the tolerance, without a proof of how the contact ends
   leaves,      ///< nearing u = 0 on the way out: the s mode takes over
+};
+
+/// What a state near the equilibrium shows (creeps_to_equilibrium).
+enum class rest_verdict {
+  moving,   ///< nothing proven: keep integrating
+  trapped,  ///< inside a trapping sector: the bead creeps to u* and never turns back
+  at_rest,  ///< at u* to half the precision, but not trapped: a turn back would be unresolvable
 };
 
 template <class W>
@@ -244,8 +259,8 @@ struct tau_result {
   tau_outcome outcome = tau_outcome::leaves;
   tau_point<W> end;                      ///< where the tau mode stopped (leaves: where exit_in_s starts)
   compression_record<W> compression;
-  W contact_time = 0;  ///< turns_back: the time v = 0 again; creeps: +inf
-  W error = 0;         ///< creeps with g = 0: the energy bound sqrt(2|E|) on e
+  W contact_time = 0;  ///< turns_back: the time v = 0 again; creeps: +inf; undecided: NaN
+  W error = 0;         ///< undecided with g = 0: the energy bound sqrt(2|E|) on e
 };
 
 /// How the way out in s ends.
@@ -288,7 +303,17 @@ class adaptive_impact_solver {
   /// The whole impact: compression in s, then tau mode and the way out in s until
   /// the bead leaves (rebound) or sticks.
   raw_result solve() {
-    tau_point<W> at = to_tau(compress_in_s());
+    bool trapped = false;
+    tau_point<W> at = to_tau(compress_in_s(trapped));
+    if (trapped) {
+      // Creeps up to u* while still compressing: never reaches it, never turns back.
+      raw_result r;
+      r.outcome = impact_outcome::stick;
+      r.contact_time = r.time_of_max = std::numeric_limits<W>::infinity();
+      r.max_compression = pow(m_law.g, 1 / m_law.alpha);
+      r.steps = m_steps;
+      return r;
+    }
     compression_record<W> compression;
     for (;;) {
       const tau_result<W> t = tau_mode(at, compression);
@@ -296,7 +321,7 @@ class adaptive_impact_solver {
       raw_result r;
       r.max_compression = compression.overlap, r.time_of_max = compression.time;
       if (t.outcome != tau_outcome::leaves) {
-        r.outcome = impact_outcome::stick;
+        r.outcome = t.outcome == tau_outcome::undecided ? impact_outcome::undecided : impact_outcome::stick;
         r.contact_time = t.contact_time, r.error = t.error, r.steps = m_steps;
         return r;
       }
@@ -321,9 +346,13 @@ class adaptive_impact_solver {
 
   // ---- phase 1: compression in s ----
   // Takes nothing (contact starts at u = 0 with v = 1); steps s up from 0 until
-  // u |u''| > v^2/2. Returns the state there, where the tau mode takes over (the
-  // only way this phase ends, short of a step-budget error).
-  s_point<W> compress_in_s() {
+  // u |u''| > v^2/2, where the tau mode takes over, or (g > 0) until the state is
+  // in the trapping sector below u* (`trapped`: the bead creeps up to u* and sticks).
+  // Returns the state where it stopped.
+  // NOTE (issue 18 item 8): with strong damping under a load the bead is pushed in
+  // at its terminal speed and creeps up to u* without u |u''| ever exceeding v^2/2;
+  // the steps, bounded by the fast damping scale, would exhaust any budget.
+  s_point<W> compress_in_s(bool& trapped) {
     using std::abs;
     using std::pow;
     s_point<W> p{W(0), {W(0), W(1), W(0)}};
@@ -337,31 +366,37 @@ class adaptive_impact_solver {
     auto rhs_s_up = [this](const W& s_, const impact_state<W>& y_, impact_state<W>& d) { return s_rhs(s_, y_, d, 1); };
     for (;;) {
       step_guard(h, p.s);
-      const gbs_status st = m_s_int.try_step(rhs_s_up, p.s, p.y, h);
-      if (st != gbs_status::accepted) continue;
+      if (!accepted(m_s_int.try_step(rhs_s_up, p.s, p.y, h), p.s)) continue;
       accumulate_error(m_s_int);
       if (switch_to_tau(p.s, p.y[1])) return p;
+      if (m_law.g > 0) {
+        typename regularised_law<W>::powers q;
+        m_law.eval(p.s, q);
+        if (creeps_to_equilibrium(p.s, m_law.velocity(p.y[1], q)) == rest_verdict::trapped) {
+          trapped = true;
+          return p;
+        }
+      }
     }
   }
 
   // ---- phase 2: tau mode, around maximal compression ----
   // Takes the state where an s mode handed over and what is known of maximal
-  // compression; steps in tau until the bead turns back, creeps to rest, or nears
-  // u = 0 on the way out. Returns that outcome, the state at the end, the updated
-  // compression record, and (for a stick) the contact time and energy bound.
+  // compression; steps in tau until the bead turns back, creeps to rest, cannot be
+  // decided at the precision, or nears u = 0 on the way out. Returns that outcome, the
+  // state at the end, the updated compression record, the contact time and energy bound.
   tau_result<W> tau_mode(tau_point<W> at, compression_record<W> compression) {
     using std::abs;
     using std::pow;
     using std::sqrt;
-    const W inf = std::numeric_limits<W>::infinity();
+    const W inf = std::numeric_limits<W>::infinity(), nan = std::numeric_limits<W>::quiet_NaN();
     auto rhs_t = [this](const W& t_, const impact_state<W>& z_, impact_state<W>& d) { return t_rhs(t_, z_, d); };
     tau_result<W> out;
     W h = initial_tau_step(at.z);
     for (;;) {
       const tau_point<W> start = at;
       step_guard(h, at.tau);
-      const gbs_status st = m_t_int.try_step(rhs_t, at.tau, at.z, h);
-      if (st != gbs_status::accepted) continue;
+      if (!accepted(m_t_int.try_step(rhs_t, at.tau, at.z, h), at.tau)) continue;
       if (!(at.z[0] > 0)) {
         // NOTE: with integer exponents the stages may all stay in u > 0 while the
         // extrapolated end crosses u = 0: retry shorter (the s mode takes over).
@@ -371,34 +406,55 @@ class adaptive_impact_solver {
       }
       accumulate_error(m_t_int);
       W turned_back_at = 0;
-      if (scan_turning_points(start, at.z, compression, turned_back_at)) {
+      const turn_scan scan = scan_turning_points(start, at.z, compression, turned_back_at);
+      if (scan == turn_scan::turned_back) {
         out.outcome = tau_outcome::turns_back, out.contact_time = turned_back_at;
+        break;
+      }
+      if (scan == turn_scan::not_located) {
+        // The bead turned back within the step (v > 0 at its accurate end after
+        // maximal compression), but the turn could not be told from maximal compression.
+        out.outcome = tau_outcome::undecided, out.contact_time = nan;
         break;
       }
       typename regularised_law<W>::powers p;
       m_law.eval(at.z[0], p);
       const W v = m_law.velocity(at.z[1], p);
       if (!compression.passed) {
-        if (m_law.g > 0 && creeps_to_equilibrium(at.z[0], v)) {
-          compression.overlap = pow(m_law.g, 1 / m_law.alpha), compression.time = inf;
-          out.outcome = tau_outcome::creeps, out.contact_time = inf;
+        const rest_verdict rest = m_law.g > 0 ? creeps_to_equilibrium(at.z[0], v) : rest_verdict::moving;
+        if (rest != rest_verdict::moving) {
+          const bool trapped = rest == rest_verdict::trapped;
+          compression.overlap = pow(m_law.g, 1 / m_law.alpha), compression.time = trapped ? inf : nan;
+          out.outcome = trapped ? tau_outcome::creeps : tau_outcome::undecided;
+          out.contact_time = trapped ? inf : nan;
           break;
         }
         continue;
       }
+      if (m_law.g == 0 && creeps_into_origin(at.z[0], at.z[1])) {
+        out.outcome = tau_outcome::creeps, out.contact_time = inf;
+        break;
+      }
       const W energy = m_law.energy(v, p);
       if (m_law.g >= 0 && 2 * energy <= m_eps_e * m_eps_e) {
-        // e <= sqrt(2E) is below the tolerance: e = 0. With g = 0 the bead cannot
-        // turn back (u'' = -u^alpha < 0 at v = 0), it creeps into u = 0.
+        // e <= sqrt(2E) is below the tolerance: the way out is closed to it. With
+        // g = 0 nothing more can be learnt: the bead cannot turn back (u'' = -u^alpha
+        // < 0 at v = 0), and whether it leaves with such an e or creeps into u = 0
+        // (no barrier above) is beyond the precision.
         if (m_law.g == 0 || energy < 0) compression.energy_stuck = true;
         if (m_law.g == 0) {
-          out.outcome = tau_outcome::creeps, out.contact_time = inf, out.error = sqrt(2 * abs(energy));
+          out.outcome = tau_outcome::undecided, out.contact_time = nan, out.error = sqrt(2 * abs(energy));
           break;
         }
       }
-      if (compression.energy_stuck && m_law.g > 0 && creeps_to_equilibrium(at.z[0], v)) {
-        out.outcome = tau_outcome::creeps, out.contact_time = inf;
-        break;
+      if (compression.energy_stuck && m_law.g > 0) {
+        const rest_verdict rest = creeps_to_equilibrium(at.z[0], v);
+        if (rest != rest_verdict::moving) {
+          const bool trapped = rest == rest_verdict::trapped;
+          out.outcome = trapped ? tau_outcome::creeps : tau_outcome::undecided;
+          out.contact_time = trapped ? inf : nan;
+          break;
+        }
       }
       if (!compression.energy_stuck && v < 0 && m_law.u_times_abs_acceleration(v, p) * 8 < v * v) {
         out.outcome = tau_outcome::leaves;
@@ -412,9 +468,11 @@ class adaptive_impact_solver {
 
   // Sign changes of v on the last tau step's nodes (the last replaced by the
   // accurate end state): maximal compression (+ to -) updates `compression`;
-  // turning back (- to +) after it returns true with its time in `turned_back_at`.
-  bool scan_turning_points(const tau_point<W>& start, const impact_state<W>& end, compression_record<W>& compression,
-                           W& turned_back_at) {
+  // turning back (- to +) after it returns turned_back with its time in `turned_back_at`.
+  enum class turn_scan { none, turned_back, not_located };
+  turn_scan scan_turning_points(const tau_point<W>& start, const impact_state<W>& end,
+                                compression_record<W>& compression, W& turned_back_at) {
+    using std::abs;
     const auto& nodes = m_t_int.nodes();
     m_v_nodes.resize(nodes.size());
     for (std::size_t m = 0; m + 1 < nodes.size(); ++m) m_v_nodes[m] = velocity_of(nodes[m]);
@@ -423,19 +481,44 @@ class adaptive_impact_solver {
       const W& v_prev = m_v_nodes[m - 1];
       const W& v_next = m_v_nodes[m];
       if (!compression.passed && v_prev > 0 && v_next <= 0) {
+        // As for a turn back (below): the nodes may show a sign change the accurate
+        // states do not have. Maximal compression needs u'' = g - u^alpha <= 0 at v = 0;
+        // a sign change of the accurate v over the step is one whatever Newton found.
+        bool confirmed = false;
         impact_state<W> at;
-        compression.time = locate_turning_point(start.tau, start.z, m, at);
+        const W t = locate_turning_point(start.tau, start.z, m, at, &confirmed);
         typename regularised_law<W>::powers p;
         m_law.eval(at[0], p);
+        const W push = m_law.g - p.ua();
+        const bool accurate_sign_change = velocity_of(start.z) > 0 && !(m_v_nodes.back() > 0);
+        if (!accurate_sign_change && !(confirmed && push <= 64 * epsilon<W>() * (abs(m_law.g) + p.ua()))) continue;
+        compression.time = t;
         compression.overlap = p.u();
         compression.passed = true;
       } else if (compression.passed && v_prev < 0 && v_next >= 0) {
+        // NOTE: the nodes are low-order midpoint values, not the step's accurate result:
+        // where |v| is far below their error (a nearly critically damped settling, linear
+        // law, gamma = 1.9999, g = 0.5: |v| ~ 1e-11 at tau ~ 27) they show sign changes
+        // that the accurate states do not have. A turn counts only if locating it confirms it.
+        // A turn back is also where u'' = g - u^alpha > 0 at v = 0 (u below u*): a
+        // root found above u* is maximal compression again (same step) or noise.
+        bool confirmed = false;
         impact_state<W> at;
-        turned_back_at = locate_turning_point(start.tau, start.z, m, at);
-        return true;
+        const W t = locate_turning_point(start.tau, start.z, m, at, &confirmed);
+        typename regularised_law<W>::powers p;
+        m_law.eval(at[0], p);
+        const W pull = m_law.g - p.ua();
+        if (confirmed && t > compression.time && pull > 64 * epsilon<W>() * (abs(m_law.g) + p.ua())) {
+          turned_back_at = t;
+          return turn_scan::turned_back;
+        }
+        // The accurate v went from < 0 (after maximal compression, at the step's
+        // start) to > 0 at its end: a turn back that Newton could not isolate.
+        if (compression.time <= start.tau && velocity_of(start.z) < 0 && m_v_nodes.back() > 0)
+          return turn_scan::not_located;
       }
     }
-    return false;
+    return turn_scan::none;
   }
 
   // ---- phase 3: the way out in s ----
@@ -456,8 +539,7 @@ class adaptive_impact_solver {
     for (;;) {
       if (-h > p.s - s_end) h = s_end - p.s;
       step_guard(h, p.s);
-      const gbs_status st = m_s_int.try_step(rhs_s_down, p.s, p.y, h);
-      if (st != gbs_status::accepted) continue;
+      if (!accepted(m_s_int.try_step(rhs_s_down, p.s, p.y, h), p.s)) continue;
       accumulate_error(m_s_int);
       if (!m_law.rational) s_end = series_end_point(p.y[1]);
       if (p.s <= s_end) {
@@ -604,10 +686,23 @@ class adaptive_impact_solver {
 
   void accumulate_error(const gbs_integrator<W, 3>& integ) { m_error += integ.last_error_vector()[1]; }
 
+  // Whether a GBS step was accepted; a non-finite state or derivative at its start is
+  // an error, since no shorter step can cure it.
+  bool accepted(gbs_status st, const W& t) const {
+    if (st == gbs_status::non_finite)
+      throw convergence_error("solve_impact_adaptive: non-finite state or derivative at t = " +
+                              to_decimal_string(t, 20) + " for " + m_where);
+    return st == gbs_status::accepted;
+  }
+
   // ---- events and rest ----
   // Newton on the step length for v = 0 between nodes m-1 and m of the last tau
-  // step from (tau0, z0). Returns the time of the turning point and the state there in `at`.
-  W locate_turning_point(const W& tau0, const impact_state<W>& z0, std::size_t m, impact_state<W>& at) {
+  // step from (tau0, z0). Returns the time of the turning point and the state there in `at`;
+  // `confirmed` (if given) says whether the accurate states show the root: Newton
+  // converged, an iterate has v of the other sign than at tau0, or the best |v| is
+  // within the rounding noise of v = w - gamma u^beta.
+  W locate_turning_point(const W& tau0, const impact_state<W>& z0, std::size_t m, impact_state<W>& at,
+                         bool* confirmed = nullptr) {
     using std::abs;
     using std::sqrt;
     auto rhs_t = [this](const W& t_, const impact_state<W>& z_, impact_state<W>& d) { return t_rhs(t_, z_, d); };
@@ -630,33 +725,49 @@ class adaptive_impact_solver {
     // damped settling: linear law, gamma = 1.93, g = 87) v is rounding noise over a
     // band of ~noise/|u''| and Newton wanders inside it with corrections far above
     // sqrt(eps); eight iterates without a smaller |v| end the search at the best one.
-    W best_h = h, best_v = -1, previous_delta = -1;
+    W best_h = h, best_v = -1, previous_delta = -1, noise = 0;
     int since_best = 0;
+    const bool starts_positive = velocity_of(z0) > 0;
+    bool crossed = false;
+    auto found = [&](bool sure) {
+      if (confirmed) *confirmed = sure || crossed || best_v <= noise;
+    };
     for (int it = 0; it < budget; ++it) {
       if (!m_t_int.fixed_step(rhs_t, tau0, z0, h, columns, at))
         throw convergence_error("solve_impact_adaptive: event location left the domain for " + m_where);
       typename regularised_law<W>::powers p;
       m_law.eval(at[0], p);
       const W v = m_law.velocity(at[1], p);
+      if (v == 0 || (v > 0) != starts_positive) crossed = true;
+      // Rounding of v = w - gamma u^beta (64 ulps of the larger term) and the error carried in w.
+      noise = 64 * (epsilon<W>() * (abs(at[1]) + m_law.gamma * p.ub()) + m_error);
       if (best_v < 0 || abs(v) < best_v) {
         best_v = abs(v), best_h = h, since_best = 0;
       } else if (++since_best >= 8) {
         h = best_h;
         m_t_int.fixed_step(rhs_t, tau0, z0, h, columns, at);
+        found(false);
         return tau0 + h;
       }
       const W u_acc = m_law.g - p.ua() - m_law.gamma_beta * p.ub1() * v;  // u''
-      if (v == 0 || u_acc == 0) return tau0 + h;
+      if (v == 0 || u_acc == 0) {
+        found(v == 0);
+        return tau0 + h;
+      }
       W next = h - v / u_acc;
       if (next < 0) next = h / 2;
       if (next > H) next = (h + H) / 2;
       const W delta = abs(next - h);
       const W scale = abs(tau0) + abs(h);
-      if (delta <= sqrt_eps * scale / 16) return tau0 + next;
+      if (delta <= sqrt_eps * scale / 16) {
+        found(true);
+        return tau0 + next;
+      }
       const bool stalled = previous_delta >= 0 && delta >= previous_delta / 2 && delta <= sqrt_eps * scale;
       if (stalled) {
         h = best_h;
         m_t_int.fixed_step(rhs_t, tau0, z0, h, columns, at);
+        found(false);
         return tau0 + h;
       }
       previous_delta = delta;
@@ -673,7 +784,7 @@ class adaptive_impact_solver {
   // d/dtau(v + kappa x) has the sign of x (Gamma kappa - kappa^2 - A) >= 0; at v = 0,
   // u'' = -(u^alpha - u*^alpha) points inside), so v never vanishes again: contact_time = inf.
   // Deliberately the same sector argument as taylor_impact.hpp's creep checks, written independently.
-  bool creeps_to_equilibrium(const W& s, const W& v) {
+  rest_verdict creeps_to_equilibrium(const W& s, const W& v) {
     using std::abs;
     using std::pow;
     using std::sqrt;
@@ -681,14 +792,46 @@ class adaptive_impact_solver {
     m_law.eval(s, p);
     const W u_star = pow(m_law.g, 1 / m_law.alpha);
     const W x = p.u() - u_star;
-    if (x == 0 || (x > 0) == (v > 0)) return x == 0 && v == 0;
+    if (x == 0 || (x > 0) == (v > 0)) return x == 0 && v == 0 ? rest_verdict::at_rest : rest_verdict::moving;
     const W lower = x > 0 ? u_star : p.u(), upper = x > 0 ? p.u() : u_star;
     const W damping = m_law.gamma_beta * pow(lower, m_law.beta - 1);
     const W stiffness = m_law.alpha * pow(upper, m_law.alpha - 1);
-    if (damping * damping >= 4 * stiffness && 2 * abs(v) <= damping * abs(x)) return true;
+    if (damping * damping >= 4 * stiffness && 2 * abs(v) <= damping * abs(x)) return rest_verdict::trapped;
     // At rest to half the precision: no further turning point can be resolved.
     const W k = m_law.alpha * m_law.g / u_star;
-    return abs(x) / u_star + abs(v) / (sqrt(k) * u_star) <= sqrt(epsilon<W>());
+    return abs(x) / u_star + abs(v) / (sqrt(k) * u_star) <= sqrt(epsilon<W>()) ? rest_verdict::at_rest
+                                                                                : rest_verdict::moving;
+  }
+
+  // g = 0, after maximal compression, at the tau-mode state (s, w): whether the bead
+  // provably creeps into u = 0 without leaving (contact_time = +inf). Barrier: for
+  // 0 < c < 1 on the curve w = c gamma u^beta (v = -(1-c) gamma u^beta < 0),
+  //     d/dtau (w - c gamma u^beta) = -u^alpha + c(1-c) gamma^2 beta u^(2 beta - 1) >= 0
+  // while q(u) = u^(alpha+1-2 beta)/(gamma^2 beta) <= c(1-c), which holds on all of
+  // (0, u] when alpha + 1 >= 2 beta (q grows with u). Above the curve v >= -(1-c) gamma
+  // u^beta, and with beta >= 1 u reaches 0 only as tau -> inf; v cannot turn positive
+  // (u'' = -u^alpha < 0 at v = 0). The least c is (1 - sqrt(1 - 4q))/2.
+  // Deliberately the same barrier as taylor_impact.hpp's, written independently.
+  bool creeps_into_origin(const W& s, const W& w) {
+    using std::abs;
+    using std::pow;
+    using std::sqrt;
+    if (!(m_law.gamma > 0)) return false;
+    const W exponent = m_law.alpha + 1 - 2 * m_law.beta;
+    if (exponent < 0) return false;
+    typename regularised_law<W>::powers p;
+    m_law.eval(s, p);
+    const W v = m_law.velocity(w, p);
+    if (!(v < 0)) return false;
+    // u a little above its computed value (q grows with u; u^0 = 1 stays exact).
+    const W u_up = p.u() * (1 + W(1) / 1048576);
+    const W q = pow(u_up, exponent) / (m_law.gamma * m_law.gamma * m_law.beta);
+    if (!(4 * q <= 1)) return false;
+    const W c = (1 - sqrt(1 - 4 * q)) / 2;
+    // Above the curve by a margin far beyond the state's error (accumulated error of w).
+    const W curve = m_law.gamma * p.ub();
+    const W gap = w - c * curve;
+    return gap >= curve / 1024 && gap > 64 * (m_error + epsilon<W>() * abs(w));
   }
 
   // The problem and the tolerances.
@@ -803,7 +946,8 @@ impact_result<Real> solve_impact_adaptive_in(const contact_law& law, const Real&
   r.max_compression = narrow<Real>(raw.max_compression, caller_digits);
   r.time_of_max_compression = narrow<Real>(raw.time_of_max, caller_digits);
   W err = solver.accumulated_error() + raw.error + tol.eps_e;
-  if (raw.outcome == impact_outcome::stick) {
+  if (raw.outcome != impact_outcome::rebound) {
+    // stick: e = 0; undecided: e = 0 to within error_estimate, contact_time NaN.
     r.e = 0, r.one_minus_e = 1, r.energy_residual = 0;
   } else {
     const W beta = law.beta.template value<W>();

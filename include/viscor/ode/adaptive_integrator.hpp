@@ -38,6 +38,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <type_traits>
 #include <vector>
 
@@ -176,6 +177,7 @@ enum class gbs_status {
   accepted,      ///< t, y advanced; h holds the proposed next step
   rejected,      ///< error too large; h holds a smaller step to retry with
   domain_error,  ///< the right-hand side refused a stage (left its domain); h halved
+  non_finite,    ///< y or f(t, y) at the step's start is not finite: no step size helps; t, y, h unchanged
 };
 
 /// A GBS extrapolation stepper for y' = f(t, y), y in Real^N, any precision.
@@ -248,6 +250,8 @@ class gbs_integrator {
       return gbs_status::domain_error;
     }
     ++m_evaluations;
+    for (std::size_t i = 0; i < N; ++i)
+      if (!isfinite(y[i]) || !isfinite(m_f0[i])) return gbs_status::non_finite;
     const int kt = m_columns;
     const int last = std::min(kt + 1, m_max_columns);
     Real last_h = h;
@@ -437,6 +441,7 @@ class gbs_integrator {
   }
 
   Real error_norm(const state& y, int j) {
+    using boost::math::isfinite;
     using std::abs;
     using std::max;
     weighted_sum(error_weights_of(j), false, m_difference);  // T_{j,j} - T_{j,j-1}
@@ -447,6 +452,8 @@ class gbs_integrator {
       m_tmp = y[i] + m_columns_values[j][i];
       const Real scale = m_atol[i] + m_rtol * max(abs(y[i]), abs(m_tmp));
       const Real diff = abs(m_difference[i]);
+      // A non-finite difference is an infinite error (the step is retried shorter), never ignored.
+      if (!isfinite(diff)) return std::numeric_limits<Real>::infinity();
       m_err_vector[i] = diff;
       if (scale > 0) {
         const Real r = diff / scale;

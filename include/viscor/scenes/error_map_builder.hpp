@@ -114,9 +114,12 @@ inline error_map build_error_map(const contact_law& law, const std::vector<refer
       c.g_lo = spec.g_edges[j], c.g_hi = spec.g_edges[j + 1];
       c.gamma_lo_v = gx[i], c.gamma_hi_v = gx[i + 1], c.g_lo_v = gy[j], c.g_hi_v = gy[j + 1];
       c.samples = static_cast<int>(in.size());
-      bool rebound = false, stick = false;
-      for (const auto* p : in) (p->outcome == impact_outcome::stick ? stick : rebound) = true;
-      c.outcome = rebound && stick ? cell_outcome::mixed : stick ? cell_outcome::stick : cell_outcome::rebound;
+      bool rebound = false, stick = false, undecided = false;
+      for (const auto* p : in)
+        (p->outcome == impact_outcome::stick ? stick : p->outcome == impact_outcome::rebound ? rebound : undecided) = true;
+      c.outcome = undecided || (rebound && stick) ? cell_outcome::mixed
+                  : stick                         ? cell_outcome::stick
+                                                  : cell_outcome::rebound;
       if (c.outcome != cell_outcome::mixed) {
         for (std::size_t k = 0; k < all_approximations.size(); ++k) {
           double worst = 0;

@@ -233,7 +233,9 @@ taylor_evaluation<W> taylor_raw(const contact_law& law, const Real& gamma, const
   const impact_result<W>& r = out.solve;
   const W step_tol = step_tolerance > epsilon<W>() ? step_tolerance : epsilon<W>();
   W abs_bound;
-  if (r.outcome == impact_outcome::stick) {
+  if (r.outcome == impact_outcome::undecided) {
+    abs_bound = std::numeric_limits<W>::infinity();  // no claim to bound: escalate
+  } else if (r.outcome == impact_outcome::stick) {
     // Energy uncertainty: the identity's residual plus steps x tolerance on the energy
     // scale (kinetic 1/2, load g u_max); a wrong stick verdict hides e <= sqrt(2 dE).
     const W scale = 1 + abs(wg) * r.max_compression;

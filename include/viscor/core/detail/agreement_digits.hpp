@@ -9,13 +9,16 @@
 namespace viscor::detail {
 
 /// -log10(|a - b| / |scale|) floored, in [0, cap]; cap when a == b (both infinite
-/// and equal included), 0 when only one is infinite.
+/// and equal included), 0 when only one is infinite, 0 when either is NaN (an
+/// undecided contact time agrees with nothing, not even another NaN).
 template <class Ref>
 int agreement_digits(const Ref& a, const Ref& b, const Ref& scale, int cap) {
   using boost::math::isinf;
+  using boost::math::isnan;
   using std::abs;
   using std::floor;
   using std::log10;
+  if (isnan(a) || isnan(b)) return 0;
   if (isinf(a) || isinf(b)) return a == b ? cap : 0;
   const Ref diff = abs(a - b);
   if (diff == 0) return cap;
