@@ -225,13 +225,12 @@ std::string run(const std::vector<std::string>& args) {
 
 // ---- evaluate over arrays ----
 
-// Codes of the method array: evaluation_method in enum order, then the surrogate.
-constexpr std::int8_t surrogate_method = static_cast<std::int8_t>(evaluation_method::certified) + 1;
+// Codes of the method array: evaluation_method in enum order (its last is the surrogate).
+constexpr std::int8_t surrogate_method = static_cast<std::int8_t>(evaluation_method::surrogate);
 
 std::vector<std::string> method_names() {
   std::vector<std::string> names;
-  for (int k = 0; k < surrogate_method; ++k) names.push_back(to_string(static_cast<evaluation_method>(k)));
-  names.push_back("surrogate");
+  for (int k = 0; k <= surrogate_method; ++k) names.push_back(to_string(static_cast<evaluation_method>(k)));
   return names;
 }
 
@@ -310,7 +309,7 @@ py::tuple evaluate(const evaluate_request& q, py::array_t<double, py::array::c_s
             if (!r) r = evaluate_one(pg[i], pgg[i], pt[i]);
             pe[i] = r->e, pome[i] = r->one_minus_e, pb[i] = r->empirical_bound;
             pm[i] = from_surrogate ? surrogate_method : static_cast<std::int8_t>(r->method);
-            po[i] = r->outcome == impact_outcome::stick ? 1 : 0;
+            po[i] = static_cast<std::int8_t>(r->outcome);  // 0 rebound, 1 stick, 2 undecided
           } catch (const std::exception& ex) {
             const std::lock_guard<std::mutex> lock(failure_mutex);
             if (i < failed_at) {

@@ -14,7 +14,7 @@ Evaluation = collections.namedtuple("Evaluation", "e one_minus_e empirical_bound
 Evaluation.__doc__ = """Arrays of the broadcast shape of (gamma, g, tol):
 e, one_minus_e, empirical_bound (float64; absolute on e, or relative on 1 - e with
 relative=True), method (int8 codes into EVALUATION_METHODS), outcome (int8: 0
-rebound, 1 stick)."""
+rebound, 1 stick, 2 undecided)."""
 
 
 def evaluate(law=None, gamma=None, g=0.0, tol=1e-6, *, alpha=None, beta=None, relative=False, error_maps="default",
