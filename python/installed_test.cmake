@@ -2,12 +2,7 @@
 # from WORK, outside the repository, with neither PYTHONPATH to the build tree nor
 # VISCOR_DATA: it must compute and find the installed data (PREFIX/share/viscor).
 # Invoked by CTest (test "python_installed").
-file(REMOVE_RECURSE "${PREFIX}" "${WORK}")
-file(MAKE_DIRECTORY "${WORK}")
-execute_process(COMMAND ${CMAKE_COMMAND} --install "${BUILD_DIR}" --prefix "${PREFIX}" RESULT_VARIABLE rc OUTPUT_QUIET)
-if(rc)
-  message(FATAL_ERROR "cmake --install failed")
-endif()
+include("${CMAKE_CURRENT_LIST_DIR}/../cmake/install_to_fresh_prefix.cmake")
 set(ENV{VISCOR_DATA} "")
 set(ENV{PYTHONPATH} "${PREFIX}/${PACKAGE_DIR}")
 execute_process(COMMAND "${PYTHON}" -c

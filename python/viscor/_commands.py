@@ -132,9 +132,14 @@ def read_table(path):
     return rows, sidecar
 
 
+def surrogate_directory():
+    """Where the committed surrogates are read from: $VISCOR_SURROGATE_DIR, else
+    <data directory>/surrogates."""
+    return os.environ.get("VISCOR_SURROGATE_DIR") or os.path.join(_viscor.data_directory(), "surrogates")
+
+
 def find_surrogate(law):
     """The committed surrogate of a named law (a Surrogate), or None: read from
     $VISCOR_SURROGATE_DIR, else <data directory>/surrogates/<law>.surrogate."""
-    directory = os.environ.get("VISCOR_SURROGATE_DIR") or os.path.join(_viscor.data_directory(), "surrogates")
-    path = os.path.join(directory, f"{law}.surrogate")
+    path = os.path.join(surrogate_directory(), f"{law}.surrogate")
     return _viscor.Surrogate(path) if os.path.exists(path) else None

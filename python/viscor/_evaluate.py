@@ -17,18 +17,33 @@ relative=True), method (int8 codes into EVALUATION_METHODS), outcome (int8: 0
 rebound, 1 stick, 2 undecided)."""
 
 
+_committed_surrogates = {}
+
+
+def _committed_surrogate(name):
+    """find_surrogate(name), read once per process and surrogate directory:
+    parsing a coefficient file costs milliseconds, an evaluation nanoseconds."""
+    from ._commands import find_surrogate, surrogate_directory
+    key = (name, surrogate_directory())
+    if key not in _committed_surrogates:
+        _committed_surrogates[key] = find_surrogate(name)
+    return _committed_surrogates[key]
+
+
 def evaluate(law=None, gamma=None, g=0.0, tol=1e-6, *, alpha=None, beta=None, relative=False, error_maps="default",
-             surrogate=None, threads=0):
+             surrogate="default", threads=0):
     """e with an empirical error bound <= tol at every point, over arrays.
 
     gamma, g, tol: array-likes of float64, broadcast together (NumPy rules). Each
     point is evaluate()d by the cheapest method whose bound meets its tol
     (docs/scenes.md): an approximation inside an error map's cell, a closed form,
     a Taylor solve. error_maps: 'default' (the data directory's error_maps/),
-    None (no approximations) or a directory. surrogate: None, True (the
-    committed surrogate of the law, docs/surrogate.md; an error if there is
-    none), a path or a Surrogate; it is used first wherever its verified bound
-    meets tol. threads: worker threads (0: every core); the GIL is released.
+    None (no approximations) or a directory. surrogate: 'default' (the
+    committed surrogate of a named law when there is one, as `viscor scene`
+    does; none otherwise), None (no surrogate), True (the committed surrogate
+    of the law, docs/surrogate.md; an error if there is none), a path or a
+    Surrogate; it is used first wherever its verified bound meets tol.
+    threads: worker threads (0: every core); the GIL is released.
 
     Raises InvalidParameter naming the first bad point (NaN, gamma < 0, ...).
     """
@@ -57,9 +72,10 @@ def evaluate(law=None, gamma=None, g=0.0, tol=1e-6, *, alpha=None, beta=None, re
         maps = ""
     else:
         maps = os.fspath(error_maps)
-    if surrogate is True:
-        from ._commands import find_surrogate
-        surrogate = find_surrogate(name) if name else None
+    if surrogate == "default":
+        surrogate = _committed_surrogate(name) if name else None
+    elif surrogate is True:
+        surrogate = _committed_surrogate(name) if name else None
         if surrogate is None:
             raise _viscor.InvalidParameter(f"evaluate: no committed surrogate for law {law!r} (docs/surrogate.md)")
     elif surrogate is not None and not isinstance(surrogate, _viscor.Surrogate):

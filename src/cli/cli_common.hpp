@@ -3,6 +3,12 @@
 // field names match the API, numbers as full-precision decimal strings).
 #pragma once
 
+// First, before anything can use them: the solvers, certification and closed forms
+// are compiled once in libviscor (src/instantiation.cpp.in). Without these extern
+// declarations every subcommand compiled its own copy of the whole solver stack
+// for every scalar type (about half of each object file, and of the build time).
+#include <viscor/certify/extern_templates.hpp>
+
 #include <viscor/core/contact_law.hpp>
 #include <viscor/core/exceptions.hpp>
 #include <viscor/core/precision.hpp>

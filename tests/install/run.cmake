@@ -2,12 +2,7 @@
 # a directory outside the repository, without VISCOR_DATA: `viscor report` must
 # find the certified tables and a scene the error maps in PREFIX/share/viscor.
 # Invoked by CTest (test "installed_cli").
-file(REMOVE_RECURSE "${PREFIX}" "${WORK}")
-file(MAKE_DIRECTORY "${WORK}")
-execute_process(COMMAND ${CMAKE_COMMAND} --install "${BUILD_DIR}" --prefix "${PREFIX}" RESULT_VARIABLE rc OUTPUT_QUIET)
-if(rc)
-  message(FATAL_ERROR "cmake --install failed")
-endif()
+include("${CMAKE_CURRENT_LIST_DIR}/../../cmake/install_to_fresh_prefix.cmake")
 foreach(f bin/viscor share/viscor/cor_report_grid.csv share/viscor/error_maps/kuwabara_kono.csv
           share/doc/viscor/README.md share/doc/viscor/json-schema.md)
   if(NOT EXISTS "${PREFIX}/${f}")

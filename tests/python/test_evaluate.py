@@ -58,7 +58,8 @@ class Values(unittest.TestCase):
         self.assertTrue(np.all(rel <= r.empirical_bound + 1e-15))
 
     def test_methods_are_named(self):
-        r = viscor.evaluate("kuwabara_kono", np.array([0.0, 0.05, 0.05]), np.array([0.0, 0.0, 1.0]), 1e-4)
+        r = viscor.evaluate("kuwabara_kono", np.array([0.0, 0.05, 0.05]), np.array([0.0, 0.0, 1.0]), 1e-4,
+                            surrogate=None)
         names = [viscor.EVALUATION_METHODS[m] for m in r.method]
         self.assertEqual(names[0], "exact")  # gamma = 0: the closed form
         for n in names:
@@ -146,10 +147,24 @@ class SurrogatePlumbing(unittest.TestCase):
                 viscor.Surrogate(os.path.join(tmp, "bad.surrogate"))
 
     def test_true_needs_a_committed_file(self):
-        if viscor.find_surrogate("hunt_crossley") is not None:
-            self.skipTest("a surrogate is committed")
+        # A law given by its exponents has no committed surrogate.
         with self.assertRaises(viscor.InvalidParameter):
-            viscor.evaluate("hunt_crossley", 0.1, 0.5, 1e-4, surrogate=True)
+            viscor.evaluate(None, 0.1, 0.5, 1e-4, alpha="2", beta="3", surrogate=True)
+        r = viscor.evaluate(None, 0.1, 0.5, 1e-4, alpha="2", beta="3")  # the default falls back silently
+        self.assertNotEqual(viscor.EVALUATION_METHODS[int(r.method)], "surrogate")
+
+    def test_default_uses_the_committed_surrogate(self):
+        law = "kuwabara_kono"
+        s = viscor.find_surrogate(law)
+        if s is None:
+            self.skipTest("no committed surrogate of " + law)
+        gamma, g = np.array([0.05, 0.3]), np.array([1.0, -0.2])
+        r = viscor.evaluate(law, gamma, g, 1e-10)
+        self.assertEqual([viscor.EVALUATION_METHODS[m] for m in r.method], ["surrogate", "surrogate"])
+        off = viscor.evaluate(law, gamma, g, 1e-10, surrogate=None)
+        self.assertNotIn("surrogate", [viscor.EVALUATION_METHODS[m] for m in off.method])
+        # Two different methods, each within its own bound of the other's value.
+        self.assertTrue(np.all(np.abs(r.e - off.e) <= r.empirical_bound + off.empirical_bound))
 
 
 @unittest.skipIf(np is None, "needs NumPy (python3-numpy)")

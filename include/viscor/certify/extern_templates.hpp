@@ -14,7 +14,9 @@
   PREFIX template impact_result<Real> solve_impact<Real>(const contact_law&, const Real&, const Real&,          \
                                                          const solve_options<Real>&);                  \
   PREFIX template certified_result<Real> certify<Real>(const contact_law&, const Real&, const Real&,            \
-                                                       const certify_options&);
+                                                       const certify_options&);                           \
+  PREFIX template certified_result<Real> detail::certify_perturbed<Real>(                                       \
+      const contact_law&, const Real&, const Real&, const certify_options&, const detail::certify_perturbation&);
 
 #define VISCOR_EXTERN_TEMPLATES(Real) VISCOR_TEMPLATES(extern, Real)
 

@@ -466,13 +466,32 @@ class adaptive_impact_solver {
     return out;
   }
 
+  // A root of v in the last tau step (between nodes m - 1 and m), located and
+  // checked: net_load = g - u^alpha there (u'' at v = 0: <= 0 at maximal
+  // compression, > 0 where the bead turns back), noise its rounding level.
+  struct located_turn {
+    W time, overlap, net_load, noise;
+    bool confirmed = false;
+  };
+  located_turn locate_turn(const tau_point<W>& start, std::size_t m) {
+    using std::abs;
+    located_turn turn;
+    impact_state<W> at;
+    turn.time = locate_turning_point(start.tau, start.z, m, at, &turn.confirmed);
+    typename regularised_law<W>::powers p;
+    m_law.eval(at[0], p);
+    turn.overlap = p.u();
+    turn.net_load = m_law.g - p.ua();
+    turn.noise = 64 * epsilon<W>() * (abs(m_law.g) + p.ua());
+    return turn;
+  }
+
   // Sign changes of v on the last tau step's nodes (the last replaced by the
   // accurate end state): maximal compression (+ to -) updates `compression`;
   // turning back (- to +) after it returns turned_back with its time in `turned_back_at`.
   enum class turn_scan { none, turned_back, not_located };
   turn_scan scan_turning_points(const tau_point<W>& start, const impact_state<W>& end,
                                 compression_record<W>& compression, W& turned_back_at) {
-    using std::abs;
     const auto& nodes = m_t_int.nodes();
     m_v_nodes.resize(nodes.size());
     for (std::size_t m = 0; m + 1 < nodes.size(); ++m) m_v_nodes[m] = velocity_of(nodes[m]);
@@ -484,16 +503,11 @@ class adaptive_impact_solver {
         // As for a turn back (below): the nodes may show a sign change the accurate
         // states do not have. Maximal compression needs u'' = g - u^alpha <= 0 at v = 0;
         // a sign change of the accurate v over the step is one whatever Newton found.
-        bool confirmed = false;
-        impact_state<W> at;
-        const W t = locate_turning_point(start.tau, start.z, m, at, &confirmed);
-        typename regularised_law<W>::powers p;
-        m_law.eval(at[0], p);
-        const W push = m_law.g - p.ua();
+        const located_turn turn = locate_turn(start, m);
         const bool accurate_sign_change = velocity_of(start.z) > 0 && !(m_v_nodes.back() > 0);
-        if (!accurate_sign_change && !(confirmed && push <= 64 * epsilon<W>() * (abs(m_law.g) + p.ua()))) continue;
-        compression.time = t;
-        compression.overlap = p.u();
+        if (!accurate_sign_change && !(turn.confirmed && turn.net_load <= turn.noise)) continue;
+        compression.time = turn.time;
+        compression.overlap = turn.overlap;
         compression.passed = true;
       } else if (compression.passed && v_prev < 0 && v_next >= 0) {
         // NOTE: the nodes are low-order midpoint values, not the step's accurate result:
@@ -502,14 +516,9 @@ class adaptive_impact_solver {
         // that the accurate states do not have. A turn counts only if locating it confirms it.
         // A turn back is also where u'' = g - u^alpha > 0 at v = 0 (u below u*): a
         // root found above u* is maximal compression again (same step) or noise.
-        bool confirmed = false;
-        impact_state<W> at;
-        const W t = locate_turning_point(start.tau, start.z, m, at, &confirmed);
-        typename regularised_law<W>::powers p;
-        m_law.eval(at[0], p);
-        const W pull = m_law.g - p.ua();
-        if (confirmed && t > compression.time && pull > 64 * epsilon<W>() * (abs(m_law.g) + p.ua())) {
-          turned_back_at = t;
+        const located_turn turn = locate_turn(start, m);
+        if (turn.confirmed && turn.time > compression.time && turn.net_load > turn.noise) {
+          turned_back_at = turn.time;
           return turn_scan::turned_back;
         }
         // The accurate v went from < 0 (after maximal compression, at the step's
