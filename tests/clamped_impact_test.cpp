@@ -109,7 +109,7 @@ TEST(ClampedImpact, LinearMatchesClosedFormOnAGrid) {
   // switch and the contact resumes (then sticks: every resumption found by a scan
   // of gamma in [0.1, 4], g in [0, 3] ended in a stick).
   for (double gamma : {0.01, 0.1, 0.3, 0.7, 1.0, 1.5, 1.75, 1.99, 2.0, 2.5, 4.0}) {
-    for (double g : {0.0, 0.001, 0.04, 0.05, 0.2, 0.5, 1.0, 2.0, 5.0}) {
+    for (double g : {-0.3, 0.0, 0.001, 0.04, 0.05, 0.2, 0.5, 1.0, 2.0, 5.0}) {  // g < 0: a pulling load
       const auto exact = viscor::exact_linear_clamped<long double>(gamma, g);
       const auto solved = viscor::solve_clamped_impact<double>(law, gamma, g);
       SCOPED_TRACE("gamma = " + std::to_string(gamma) + ", g = " + std::to_string(g));
@@ -143,7 +143,7 @@ TEST(ClampedImpact, HertzTypeLawsMatchAnIndependentIntegrator) {
                            law_case{"kuwabara_kono", 1.5L, 1.5L, 2}}) {
     const auto law = viscor::law_by_name(c.name);
     for (double gamma : {0.05, 0.3, 1.0, 2.5})
-      for (double g : {0.0, 0.02, 0.3, 1.5}) {
+      for (double g : {-0.2, 0.0, 0.02, 0.3, 1.5}) {
         SCOPED_TRACE(std::string(c.name) + " gamma = " + std::to_string(gamma) + ", g = " + std::to_string(g));
         const rkf_reference ref = rkf_clamped(c.alpha, c.beta, c.q, gamma, g);
         const auto d = viscor::solve_clamped_impact<double>(law, gamma, g);
