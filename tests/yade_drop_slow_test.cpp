@@ -33,6 +33,27 @@ TEST(YadeDropSweep, MindlinReproducesTarget) {
   }
 }
 
+// Two identical beads head-on (E* = E/(2(1 - nu^2)), R* = R/2, m* = m/2), free and
+// pressed together by 1e-4 N each (setPermF), at dt = T/400 and T/800.
+TEST(YadeDropSweep, PairReproducesTarget) {
+  const auto yade = find_yade();
+  if (!yade) GTEST_SKIP() << "yade is not installed (tools/install-deps.sh installs it)";
+  std::vector<drop_case> cases;
+  for (const auto& m : dem_drop::drop_materials())
+    for (double force : {0.0, 1e-4})
+      for (int per_T : {400, 800}) cases.push_back(deck_drop(m, 0.01, 0.0, per_T, contact_kind::pair, force));
+  std::string message;
+  ASSERT_TRUE(run_drops(*yade, cases, message)) << message;
+  for (std::size_t i = 0; i < cases.size(); i += 2) {
+    SCOPED_TRACE(cases[i].name);
+    ASSERT_TRUE(cases[i].ok && cases[i + 1].ok && cases[i].force_free && cases[i + 1].force_free);
+    const double m400 = cases[i].e - cases[i].expected_e, m800 = cases[i + 1].e - cases[i + 1].expected_e;
+    EXPECT_LE(std::abs(m400), yade_tolerance_at_T_over_400);
+    EXPECT_LT(std::abs(m800), std::abs(m400));
+    std::printf("[yade] %s: miss at T/400, T/800: %.2e %.2e\n", cases[i].name.c_str(), m400, m800);
+  }
+}
+
 // Writing the measured e as `en` (YADE's own conversion): YADE gives viscor's builtin_e.
 TEST(YadeDropSweep, BuiltinConversion) {
   const auto yade = find_yade();

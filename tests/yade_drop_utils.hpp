@@ -33,6 +33,8 @@ struct drop_case {
   std::string young, poisson, betan;  ///< deck strings (betan empty: `en` below)
   std::string en;                     ///< YADE's own conversion instead of betan
   double radius = 0, density = 0, v0 = 0, gravity = 0, dt = 0;
+  bool pair = false;  ///< two beads head-on instead of a bead on the wall
+  double force = 0;   ///< N pressing the pair together (each bead)
   int max_steps = 0;
   double expected_e = 0;
   double e = -1;           ///< simulated
@@ -40,15 +42,18 @@ struct drop_case {
 };
 
 /// A drop of material m at v0 under gravity with viscor's deck for m.target_e, at dt = T/per_T.
-inline drop_case deck_drop(const dem_drop::material_case& m, double v0, double gravity, int per_T) {
+inline drop_case deck_drop(const dem_drop::material_case& m, double v0, double gravity, int per_T,
+                           contact_kind kind = contact_kind::wall, double force = 0) {
   const dem_model& model = find_dem_model("yade", "mindlin");
   dem_impact<double> impact;
-  impact.bead = m.bead, impact.v0 = v0, impact.gravity = gravity;
+  impact.bead = m.bead, impact.v0 = v0, impact.gravity = gravity, impact.kind = kind, impact.force = force;
   const dem_deck<double> d = dem_deck_for(model, impact, m.target_e);
   drop_case c;
   char name[160];
-  std::snprintf(name, sizeof name, "%s v0 = %g m/s gravity = %g m/s^2 dt = T/%d", m.name, v0, gravity, per_T);
+  std::snprintf(name, sizeof name, "%s %s v0 = %g m/s gravity = %g m/s^2 force = %g N dt = T/%d", m.name,
+                kind == contact_kind::pair ? "pair" : "wall", v0, gravity, force, per_T);
   c.name = name;
+  c.pair = kind == contact_kind::pair, c.force = force;
   c.young = to_decimal_string(d.youngs_modulus), c.poisson = to_decimal_string(d.poisson_ratio);
   c.betan = to_decimal_string(d.damping);
   c.radius = m.bead.radius, c.density = m.bead.density, c.v0 = v0, c.gravity = gravity;
@@ -75,7 +80,8 @@ inline bool run_drops(const std::string& yade, std::vector<drop_case>& cases, st
           << dem_drop::format_double(c.density) << "\", \"radius\": \"" << dem_drop::format_double(c.radius)
           << "\", \"v0\": \"" << dem_drop::format_double(c.v0) << "\", \"gravity\": \""
           << dem_drop::format_double(c.gravity) << "\", \"dt\": \"" << dem_drop::format_double(c.dt)
-          << "\", \"max_steps\": " << c.max_steps << "}";
+          << "\", \"contact\": \"" << (c.pair ? "pair" : "wall") << "\", \"force\": \""
+          << dem_drop::format_double(c.force) << "\", \"max_steps\": " << c.max_steps << "}";
     }
     out << "]\n";
   }

@@ -29,20 +29,32 @@ def drop(c):
                                        density=float(c['density']), frictionAngle=0))
     rigid = O.materials.append(FrictMat(young=1e30, poisson=float(c['poisson']), density=float(c['density']),
                                         frictionAngle=0))
-    s = utils.sphere((0, 0, R), R, material=bead)
-    O.bodies.append([utils.wall(0, axis=2, material=rigid), s])
     v0, g, dt = float(c['v0']), float(c['gravity']), float(c['dt'])
-    s.state.vel = (0, 0, -v0)
+    pair = c.get('contact') == 'pair'
+    if pair:  # two beads touching on the z axis, approaching at v0, pressed together by `force` each
+        s = utils.sphere((0, 0, R), R, material=bead)
+        low = utils.sphere((0, 0, -R), R, material=bead)
+        O.bodies.append([low, s])
+        s.state.vel, low.state.vel = (0, 0, -v0 / 2), (0, 0, v0 / 2)
+        F = float(c.get('force', '0'))
+        O.forces.setPermF(1, (0, 0, -F))
+        O.forces.setPermF(0, (0, 0, F))
+        g = 0.0  # uniform gravity drops out of the relative motion
+    else:
+        s = utils.sphere((0, 0, R), R, material=bead)
+        O.bodies.append([utils.wall(0, axis=2, material=rigid), s])
+        s.state.vel = (0, 0, -v0)
     O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Wall_Aabb()]),
-                 InteractionLoop([Ig2_Wall_Sphere_ScGeom()], [physics(c)],
+                 InteractionLoop([Ig2_Wall_Sphere_ScGeom(), Ig2_Sphere_Sphere_ScGeom()], [physics(c)],
                                  [Law2_ScGeom_MindlinPhys_Mindlin()]),
                  NewtonIntegrator(damping=0, gravity=(0, 0, -g))]
     O.dt = dt
     deltas, forces = [0.0], []
     for _ in range(int(c['max_steps'])):
         O.step()
-        forces.append(O.forces.f(1)[2])  # the force at deltas[-1], computed in this step
-        deltas.append(R - s.state.pos[2])
+        # the contact force at deltas[-1], computed in this step (without the permanent load)
+        forces.append(O.interactions[0, 1].phys.normalForce.norm() if O.interactions.has(0, 1) and O.interactions[0, 1].isReal else 0.0)
+        deltas.append(2 * R - (s.state.pos[2] - low.state.pos[2]) if pair else R - s.state.pos[2])
         if deltas[-1] <= 0 and len(deltas) > 3 and deltas[-2] > 0:
             x0, x1, x2 = deltas[-3], deltas[-2], deltas[-1]  # at t = -dt, 0, dt
             a = (x2 - 2 * x1 + x0) / (dt * dt)
