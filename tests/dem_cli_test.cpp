@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <filesystem>
 #include <string>
 
@@ -48,6 +49,39 @@ TEST(CliDem, DeckFieldsReproduceTheTarget) {
   }
 }
 
+// YADE: betan as a decimal string that gives the target through the clamped law,
+// the deck modulus sqrt(2) E (R* = R/2 on YADE's wall), builtin_e from `en`
+// (Thornton's fit), the snippet with the values filled in, and the reverse table.
+TEST(CliDem, YadeMindlin) {
+  if (!cli_built()) GTEST_SKIP() << "viscor CLI not built";
+  const auto r = run_cli("dem yade --damping mindlin" + steel + " --target-e 0.7 --v0 0.01 --gravity 9.81 --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(j["clamped"].get<bool>());
+  const auto& m = viscor::dem::find_dem_model("yade", "mindlin");
+  viscor::dem::dem_impact<double> impact;
+  impact.bead = {2e11, 0.3, 1e-3, 7800}, impact.v0 = 0.01, impact.gravity = 9.81;
+  const double betan = std::stod(j["deck"]["damping"].get<std::string>());
+  EXPECT_NEAR(viscor::dem::e_for_deck(m, impact, betan).e, 0.7, 1e-10);
+  EXPECT_NEAR(std::stod(j["deck"]["youngs_modulus"].get<std::string>()), std::sqrt(2.0) * 2e11, 1e-15 * 3e11);
+  EXPECT_EQ(j["deck"]["wall_youngs_modulus"], "1e30");
+  const double builtin = std::stod(j["builtin_e"].get<std::string>());
+  EXPECT_NEAR(builtin, viscor::dem::e_for_deck(m, impact, viscor::dem::yade_thornton_betan(0.7)).e, 1e-12);
+  EXPECT_NEAR(std::stod(j["builtin_error_percent_of_one_minus_e"].get<std::string>()), 100 * (builtin - 0.7) / 0.3, 1e-9);
+  const std::string snippet = j["snippet"];
+  for (const std::string& text : {std::string("betan=") + j["deck"]["damping"].get<std::string>(),
+                                  std::string("density=7800"), std::string("gravity=(0, 0, -9.81)"),
+                                  std::string("NewtonIntegrator(damping=0")})
+    EXPECT_NE(snippet.find(text), std::string::npos) << text << " in\n" << snippet;
+  const auto rev = run_cli("dem yade --damping mindlin" + steel + " --deck-damping " + j["deck"]["damping"].get<std::string>() +
+                           " --gravity 9.81 --speeds 0.01 --json");
+  ASSERT_EQ(rev.status, 0) << rev.err;
+  const auto table = nlohmann::json::parse(rev.out)["table"];
+  ASSERT_EQ(table.size(), 2u);
+  EXPECT_NEAR(std::stod(table[1]["e"].get<std::string>()), 0.7, 1e-10);  // under gravity, as calibrated
+  EXPECT_GT(std::stod(table[0]["e"].get<std::string>()), 0.7);            // without load the bead rebounds more
+}
+
 TEST(CliDem, ReverseTableListsSpeedsAndLoads) {
   if (!cli_built()) GTEST_SKIP() << "viscor CLI not built";
   const auto r = run_cli("dem lammps --damping tsuji" + steel + " --deck-damping 0.8 --gravity 9.81 --speeds 0.01,1 --json");
@@ -76,6 +110,9 @@ TEST(CliDem, BadInputExitsTwoNamingTheValue) {
                        bad{"dem lammps --damping tsuji --target-e 0.5 --contact floor" + tail, "'floor'"},
                        bad{"dem lammps --damping tsuji --target-e 0.5" + steel + " --v0 1", "--gravity"},
                        bad{"dem liggghts --damping hertz --deck-damping 1.5" + tail, "1.5"},
+                       bad{"dem yade --damping viscoelastic --target-e 0.5" + tail, "'viscoelastic'"},
+                       bad{"dem yade --damping mindlin --target-e 1" + tail, "target_e"},
+                       bad{"dem yade --damping mindlin --deck-damping -0.1" + tail, "deck damping"},
                        // needs less damping than the tsuji polynomial gives at e = 1 (0.0003)
                        bad{"dem lammps --damping tsuji --target-e 0.9999" + steel + " --v0 1 --gravity 0", "target_e = 9.999"},
                        // a pulling force: the bead cannot lose enough energy

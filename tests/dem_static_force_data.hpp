@@ -48,3 +48,30 @@ inline constexpr std::array<static_force_case, 11> static_forces{{
 }};
 
 }  // namespace viscor::test
+
+namespace viscor::test {
+
+// YADE 2023.02a (package yade 2023.02a-1), measured 2026-12-02 by
+// tools/dem/static_force_yade.py (one O.step() at dt = 1e-12 s; see its header):
+// same bead, overlap and positions as above; overlap rate > 0 approaching, and
+// -0.5 m/s separating, where elastic + viscous force pulls and YADE prints 0.
+struct yade_static_force_case {
+  const char* law;      ///< "mindlin" (betan given, or en: Thornton's betan) or "viscel" (kn, cn per material)
+  const char* contact;  ///< wall (utils.wall of a material with young 1e30; viscel: the bead's material) or pair
+  double deck_damping;  ///< betan, en, or the per-material cn (N s/m; kn = 1e4 N/m)
+  bool deck_is_en;      ///< mindlin with `en` instead of betan
+  double overlap_rate;  ///< m/s
+  double force;         ///< printed normal force, N
+};
+
+inline constexpr std::array<yade_static_force_case, 7> yade_static_forces{{
+    {"mindlin", "wall", 0.3, false, 0.05, 0.017360126483443698},
+    {"mindlin", "wall", 0.3, false, -0.05, 0.0011733689607672567},
+    {"mindlin", "wall", 0.3, false, -0.5, 0},
+    {"mindlin", "pair", 0.3, false, 0.1, 0.012726752622389984},
+    {"mindlin", "wall", 0.5, true, 0.05, 0.015553275835568923},
+    {"viscel", "wall", 0.2, false, 0.05, 0.015000000000000244},
+    {"viscel", "wall", 0.2, false, -0.5, 0},
+}};
+
+}  // namespace viscor::test

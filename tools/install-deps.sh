@@ -18,6 +18,7 @@ packages=(
   libflint-arb-dev          # Arb ball arithmetic: proven enclosures, include/viscor/enclose (issue 17)
   pybind11-dev python3-dev  # Python module viscor (issue 16, docs/python.md)
   python3-numpy python3-mpmath  # its vectorised evaluate and tests; Result.mpf
+  yade                      # DEM program run by tests/yade_drop_*test.cpp (issue 15, YADE 2023.02a)
 )
 
 missing=()

@@ -36,7 +36,7 @@ struct dem_command {
   }
 
   void run() const {
-    require(code, "CODE", "lammps or liggghts");
+    require(code, "CODE", "lammps, liggghts or yade");
     require(damping, "--damping", "the code's damping model");
     const dem::dem_model& model = dem::find_dem_model(code, damping);
     const dem::contact_kind kind = dem::parse_contact_kind(contact);
@@ -68,6 +68,7 @@ struct dem_command {
       j["damping"] = damping;
       j["contact"] = contact;
       j["law"] = law_json(dem::law_of(model));
+      j["clamped"] = model.clamped;  // the code sets a pulling normal force to zero
       j["version"] = std::string(model.version);
       j["source"] = std::string(model.source);
       j["material"] = {{"youngs_modulus", youngs_modulus},
@@ -133,11 +134,18 @@ struct dem_command {
       j["builtin_e"] = number(*d.builtin_e);
       j["builtin_error"] = number(miss);
       j["builtin_error_percent_of_one_minus_e"] = number(dem::percent_of_one_minus_e(*d.builtin_e, target));
-      text << "builtin     writing e = " << target_e << " into the deck gives e = " << to_decimal_string(*d.builtin_e, 10)
+      const bool yade = model.code == dem::dem_code::yade;
+      if (yade) j["builtin_conversion"] = "Ip2_FrictMat_FrictMat_MindlinPhys(en=target_e) instead of betan (Thornton et al. 2013 fit)";
+      text << "builtin     writing " << (yade ? "en = " : "e = ") << target_e << " into the " << (yade ? "input" : "deck") << " gives e = " << to_decimal_string(*d.builtin_e, 10)
            << " (" << to_decimal_string(miss, 3) << ", " << to_decimal_string(dem::percent_of_one_minus_e(*d.builtin_e, target), 3)
            << " % of 1 - e)\n";
     }
-    const std::string snippet = dem::deck_snippet(model, impact.kind, s);
+    std::string snippet = dem::deck_snippet(model, impact.kind, s);
+    if (model.code == dem::dem_code::yade)  // the YADE script names the bead's size, density and the load
+      for (const auto& [name, value] : {std::pair<std::string, std::string>{"DENSITY", density}, {"RADIUS", radius},
+                                        {"GRAVITY", gravity}})
+        for (std::size_t at = snippet.find(name); at != std::string::npos; at = snippet.find(name, at + value.size()))
+          snippet.replace(at, name.size(), value);
     j["snippet"] = snippet;
     text << "snippet\n" << snippet;
   }
@@ -182,9 +190,9 @@ struct dem_command {
 void setup(CLI::App& app) {
   auto cmd = std::make_shared<dem_command>();
   cmd->output.add_to(app);
-  app.add_option("code", cmd->code, "DEM code: lammps (29 Sep 2021) or liggghts (3.8.0)");
+  app.add_option("code", cmd->code, "DEM code: lammps (29 Sep 2021), liggghts (3.8.0) or yade (2023.02a)");
   app.add_option("--damping", cmd->damping,
-                 "damping model: lammps velocity|mass_velocity|viscoelastic|tsuji, liggghts hertz");
+                 "damping model: lammps velocity|mass_velocity|viscoelastic|tsuji, liggghts hertz, yade mindlin");
   app.add_option("--contact", cmd->contact, "wall (bead on a rigid wall) or pair (two identical beads)")
       ->capture_default_str();
   app.add_option("--youngs-modulus", cmd->youngs_modulus, "Young's modulus E of the bead, Pa");
@@ -202,7 +210,7 @@ void setup(CLI::App& app) {
   app.callback([cmd] { cmd->run(); });
 }
 
-const registration reg{"dem", "damping entries for LAMMPS / LIGGGHTS decks that reproduce a measured e", setup};
+const registration reg{"dem", "damping entries for LAMMPS / LIGGGHTS / YADE inputs that reproduce a measured e", setup};
 
 }  // namespace
 }  // namespace viscor::cli

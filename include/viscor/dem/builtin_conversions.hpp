@@ -47,6 +47,23 @@ Real liggghts_damping_ratio(const Real& e) {
   return Real(-l / sqrt(l * l + boost::math::constants::pi<Real>() * boost::math::constants::pi<Real>()));
 }
 
+/// YADE 2023.02a Ip2_FrictMat_FrictMat_MindlinPhys with `en`: the betan it derives from
+/// the deck's e by the fit of Thornton et al. (2013, eqs. B6-B7),
+///   betan = sqrt(1 / (1 - (1 + e)^2 exp(a(e))) - 1),  a(e) = e (h1 + e (h2 + ... + e h10)),
+/// with the ten coefficients the code writes as decimals; betan(1) = 0.
+template <class Real>
+Real yade_thornton_betan(const Real& e) {
+  using std::exp;
+  using std::sqrt;
+  if (e == 1) return Real(0);
+  static const char* const h[] = {"-6.918798", "-16.41105", "146.8049", "-796.4559", "2928.711",
+                                  "-7206.864", "11494.29",  "-11342.18", "6276.757", "-1489.915"};
+  Real a = parse_real<Real>(h[9], "Thornton coefficient");
+  for (int i = 8; i >= 0; --i) a = a * e + parse_real<Real>(h[i], "Thornton coefficient");
+  a *= e;
+  return Real(sqrt(1 / (1 - (1 + e) * (1 + e) * exp(a)) - 1));
+}
+
 /// The e in [0, 1] whose LAMMPS tsuji polynomial equals `damping`; unreachable_target
 /// outside [eta'(1), eta'(0)] = [0.0003, 1.2728].
 template <class Real>

@@ -15,6 +15,14 @@
 //   type has its own Y and nu (so a wall type of the bead's material halves E*);
 //   a wall type with Y = 1e30 is rigid. The damping is D P delta^(1/4) delta' with
 //   D = |b(e)|, P = sqrt(5) sqrt(m* k).
+// YADE 2023.02a (Ip2_FrictMat_FrictMat_MindlinPhys(betan), Law2_ScGeom_MindlinPhys_Mindlin):
+//   F = max(0, kno delta^(3/2) + 2 betan sqrt(mbar (3/2) kno sqrt(delta)) d(delta)/dt),
+//   kno = (4/3) E* sqrt(R*), E* = 1 / ((1-nu_a^2)/E_a + (1-nu_b^2)/E_b), R* = R_a R_b / (R_a + R_b),
+//   where a wall (utils.wall, Ig2_Wall_Sphere_ScGeom) counts with the sphere's radius
+//   (refR1 = refR2 = R): R* = R/2 on a wall. mbar = the dynamic body's mass when the
+//   other is not dynamic, else m1 m2 / (m1 + m2). A wall material with E = 1e30 is
+//   rigid, and the deck E = sqrt(2) E makes kno the physical k. D = betan,
+//   P = sqrt(6) sqrt(m* k); the clamp at zero is impact/clamped_impact.hpp.
 #pragma once
 
 #include <viscor/dem/builtin_conversions.hpp>
@@ -34,19 +42,26 @@ inline constexpr const char* liggghts_rigid_wall_modulus = "1e30";
 /// of its own, made rigid by liggghts_rigid_wall_modulus.
 template <class Real>
 Real deck_youngs_modulus(const dem_model& model, const bead_material<Real>& bead, contact_kind kind) {
+  using std::sqrt;
   if (kind == contact_kind::wall && model.code == dem_code::lammps)
     return Real(2 * bead.youngs_modulus / (1 + bead.poisson_ratio));
+  if (kind == contact_kind::wall && model.code == dem_code::yade)  // R* = R/2 on a YADE wall
+    return Real(sqrt(Real(2)) * bead.youngs_modulus);
   return bead.youngs_modulus;
 }
 
-/// The code's own E* for a deck modulus (and, for a LIGGGHTS wall, the wall
-/// type's modulus and Poisson ratio): what the program computes.
+/// The code's own E* for a deck modulus (and, for a LIGGGHTS or YADE wall, the wall
+/// type's modulus and Poisson ratio): what the program computes, referred to the
+/// physical R* (YADE's wall uses R/2, so its E* is divided by sqrt(2) here).
 template <class Real>
 Real code_effective_modulus(const dem_model& model, const Real& deck_modulus, const Real& nu, contact_kind kind,
                             const Real& wall_modulus = Real(0), const Real& wall_nu = Real(0)) {
   if (kind == contact_kind::pair) return Real(deck_modulus / (2 * (1 - nu * nu)));
+  using std::sqrt;
   if (model.code == dem_code::lammps) return Real(deck_modulus / (2 * (1 - nu)));
-  return Real(1 / ((1 - nu * nu) / deck_modulus + (1 - wall_nu * wall_nu) / wall_modulus));
+  const Real pair_modulus = 1 / ((1 - nu * nu) / deck_modulus + (1 - wall_nu * wall_nu) / wall_modulus);
+  if (model.code == dem_code::yade) return Real(pair_modulus / sqrt(Real(2)));
+  return pair_modulus;
 }
 
 /// gamma0 per unit damping number D: gamma0 = D * damping_scale = D P / (beta k).
@@ -61,6 +76,7 @@ Real damping_scale(const dem_model& model, const hertz_contact<Real>& c) {
     case damping_model::viscoelastic: return Real(2 * m * sqrt(c.effective_radius) / (3 * k));
     case damping_model::tsuji: return Real(4 * sqrt(m * k) / (5 * k));
     case damping_model::hertz_restitution: return Real(4 * sqrt(Real(5)) * sqrt(m * k) / (5 * k));
+    case damping_model::mindlin: return Real(4 * sqrt(Real(6)) * sqrt(m * k) / (5 * k));
   }
   throw invalid_parameter("damping_scale: unknown damping model");
 }
@@ -102,7 +118,8 @@ void validate_deck_damping(const dem_model& model, const Real& value) {
 
 /// The normal force the code computes for its deck entries (deck modulus and
 /// Poisson ratio, deck damping entry) at overlap delta > 0 and overlap rate
-/// delta_rate (> 0 approaching): F = k_code delta^(3/2) + D P delta^(beta-1) delta_rate,
+/// delta_rate (> 0 approaching): F = k_code delta^(3/2) + D P delta^(beta-1) delta_rate
+/// (clamped at 0 for models that clamp),
 /// with P from the code's own k_code. Used to check the conventions against
 /// forces printed by the real programs.
 template <class Real>
@@ -118,7 +135,8 @@ Real code_normal_force(const dem_model& model, const bead_material<Real>& bead, 
   const Real beta = law.beta.value<Real>();
   const Real gamma0 = damping_number(model, deck_damping) * damping_scale(model, c);
   // viscor's form: k delta^(3/2) + gamma0 k d/dt(delta^beta) = k delta^(3/2) + gamma0 k beta delta^(beta-1) delta'
-  return Real(c.stiffness * delta * sqrt(delta) + gamma0 * c.stiffness * beta * pow(delta, beta - 1) * delta_rate);
+  const Real force = c.stiffness * delta * sqrt(delta) + gamma0 * c.stiffness * beta * pow(delta, beta - 1) * delta_rate;
+  return model.clamped && force < 0 ? Real(0) : force;
 }
 
 }  // namespace viscor::dem

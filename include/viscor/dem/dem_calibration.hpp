@@ -14,9 +14,13 @@
 
 #include <viscor/core/scaling.hpp>
 #include <viscor/dem/deck_convention.hpp>
+#include <viscor/impact/clamped_impact.hpp>
 #include <viscor/impact/solve_impact.hpp>
 #include <viscor/scenes/calibration.hpp>
 
+#include <boost/math/tools/toms748_solve.hpp>
+
+#include <cstdint>
 #include <optional>
 #include <string>
 
@@ -52,7 +56,47 @@ impact_result<Real> e_for_deck(const dem_model& model, const dem_impact<Real>& i
   const Real gamma0 = damping_number(model, deck_damping) * damping_scale(model, c);
   const contact_law law = law_of(model);
   const scaled_parameters<Real> s = to_scaled(law, physical_impact(c, impact, gamma0));
-  return solve_impact(law, s.gamma, s.g, options);
+  if (!model.clamped) return solve_impact(law, s.gamma, s.g, options);
+  const clamped_impact_result<Real> clamped = solve_clamped_impact(law, s.gamma, s.g);
+  impact_result<Real> r;
+  r.e = clamped.e, r.one_minus_e = 1 - clamped.e, r.outcome = clamped.outcome;
+  r.contact_time = clamped.contact_time, r.steps = clamped.steps;
+  return r;
+}
+
+/// The calibration of a clamping model (impact/clamped_impact.hpp): the scaled gamma
+/// whose clamped e is target_e at the scaled load g, by TOMS 748 on gamma (e falls
+/// as gamma grows); unreachable_target when even gamma_max leaves e above the target.
+template <class Real>
+calibration_result<Real> calibrate_clamped_gamma(const contact_law& law, const Real& g, const Real& target_e,
+                                                 const calibration_options<Real>& options) {
+  calibration_result<Real> r;
+  r.g = g;
+  auto miss = [&](const Real& gamma) {
+    ++r.solves;
+    return Real(solve_clamped_impact(law, gamma, g).e - target_e);
+  };
+  Real hi = Real(1) / 4;
+  while (miss(hi) > 0) {
+    if (hi > options.gamma_max)
+      throw unreachable_target("target_e = " + to_decimal_string(target_e) + " needs a scaled damping above " +
+                               to_decimal_string(options.gamma_max) + " with the clamped force");
+    hi *= 2;
+  }
+  // NOTE: gamma to 44 bits: e is a smooth function of gamma, so that is ~1e-13 in e,
+  // and tighter brackets would only chase the solver's last-digit noise.
+  std::uintmax_t iterations = 200;
+  const auto bracket = boost::math::tools::toms748_solve(miss, Real(0), hi, Real(1 - target_e), miss(hi),
+                                                         boost::math::tools::eps_tolerance<Real>(44), iterations);
+  r.gamma_lo = bracket.first, r.gamma_hi = bracket.second;
+  r.gamma = (bracket.first + bracket.second) / 2;
+  r.e = solve_clamped_impact(law, r.gamma, g).e;
+  if (!(r.e > 0))
+    throw unreachable_target("target_e = " + to_decimal_string(target_e) +
+                             " is unreachable with the clamped force at this load: the bead sticks first");
+  using std::abs;
+  r.e_error = abs(r.e - target_e);
+  return r;
 }
 
 /// The values to write into a DEM code's contact-model input, and what they reproduce.
@@ -66,7 +110,7 @@ struct dem_deck {
   Real gamma0 = 0;          ///< viscor's physical damping (units that make k gamma0 d/dt(delta^beta) a force)
   hertz_contact<Real> contact;
   physical_calibration<Real> calibration;
-  std::optional<Real> builtin_e;  ///< restitution models: e when the target is written into the deck
+  std::optional<Real> builtin_e;  ///< restitution models (and YADE's `en`): e when the target is written into the deck
 };
 
 /// The deck that reproduces target_e at this impact; unreachable_target when no
@@ -84,7 +128,16 @@ dem_deck<Real> dem_deck_for(const dem_model& model, const dem_impact<Real>& impa
   d.contact = make_hertz_contact(impact.bead, impact.kind);
   const contact_law law = law_of(model);
   const physical_parameters<Real> p = physical_impact(d.contact, impact, Real(0));
-  d.calibration = calibrate_gamma0(law, p.m, p.k, p.v0, p.gravity, p.force, target_e, options);
+  if (model.clamped) {
+    physical_parameters<Real> unit = p;
+    unit.gamma0 = 1;  // scaled gamma is proportional to gamma0; g does not depend on it
+    const scaled_parameters<Real> s = to_scaled(law, unit);
+    d.calibration.scaled = calibrate_clamped_gamma(law, s.g, target_e, options);
+    d.calibration.gamma0 = d.calibration.scaled.gamma / s.gamma;
+    d.calibration.time_scale = s.time_scale;
+  } else {
+    d.calibration = calibrate_gamma0(law, p.m, p.k, p.v0, p.gravity, p.force, target_e, options);
+  }
   d.gamma0 = d.calibration.gamma0;
   d.damping_number = d.gamma0 / damping_scale(model, d.contact);
   try {
@@ -96,10 +149,12 @@ dem_deck<Real> dem_deck_for(const dem_model& model, const dem_impact<Real>& impa
   }
   d.youngs_modulus = deck_youngs_modulus(model, impact.bead, impact.kind);
   d.poisson_ratio = impact.bead.poisson_ratio;
-  if (model.code == dem_code::liggghts && impact.kind == contact_kind::wall)
+  if (model.code != dem_code::lammps && impact.kind == contact_kind::wall)
     d.wall_youngs_modulus = parse_real<Real>(liggghts_rigid_wall_modulus, "wall youngs_modulus");
   if (model.deck_kind == deck_damping_kind::coefficient_of_restitution)
     d.builtin_e = e_for_deck(model, impact, target_e, options.solve).e;
+  if (model.damping == damping_model::mindlin)  // the deck's `en` instead of betan: Thornton's fit
+    d.builtin_e = e_for_deck(model, impact, yade_thornton_betan(target_e), options.solve).e;
   return d;
 }
 

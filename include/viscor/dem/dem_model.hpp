@@ -25,6 +25,7 @@ enum class damping_model {
   viscoelastic,   ///< LAMMPS: F_d = eta m* sqrt(R* delta) delta'
   tsuji,          ///< LAMMPS: F_d = eta'(e) sqrt(m* K sqrt(R* delta)) delta', eta' a polynomial in the deck's e
   hertz_restitution,  ///< LIGGGHTS model hertz: F_d = sqrt(5) b(e) sqrt(m* k) delta^(1/4) delta', b from the deck's e
+  mindlin,  ///< YADE Hertz-Mindlin: F = max(0, k delta^(3/2) + sqrt(6) betan sqrt(m* k) delta^(1/4) delta'), deck betan
 };
 
 /// What the deck's damping number is.
@@ -43,12 +44,15 @@ struct dem_model {
   deck_damping_kind deck_kind;
   std::string_view version;       ///< the program version the convention was read from and checked in
   std::string_view source;        ///< where in that program's source
+  bool clamped = false;           ///< the code sets a pulling total normal force to zero (impact/clamped_impact.hpp)
 };
 
 inline constexpr std::string_view lammps_version = "LAMMPS 29 Sep 2021 update 2 (Debian 12 lammps 20220106.git7586adbb6a+ds1-2+b2)";
 inline constexpr std::string_view liggghts_version = "LIGGGHTS-PUBLIC 3.8.0 (Debian 12 liggghts 3.8.0+repack1-9+b2)";
 
-inline constexpr std::array<dem_model, 5> dem_models{{
+inline constexpr std::string_view yade_version = "YADE 2023.02a (Debian 12 yade 2023.02a-1)";
+
+inline constexpr std::array<dem_model, 6> dem_models{{
     {dem_code::lammps, damping_model::velocity, "lammps", "velocity", "hertz_linear_damping",
      deck_damping_kind::coefficient, lammps_version, "src/GRANULAR/pair_granular.cpp, fix_wall_gran.cpp"},
     {dem_code::lammps, damping_model::mass_velocity, "lammps", "mass_velocity", "hertz_linear_damping",
@@ -60,6 +64,8 @@ inline constexpr std::array<dem_model, 5> dem_models{{
     {dem_code::liggghts, damping_model::hertz_restitution, "liggghts", "hertz", "tsuji",
      deck_damping_kind::coefficient_of_restitution, liggghts_version,
      "src/normal_model_hertz.h, src/global_properties.cpp"},
+    {dem_code::yade, damping_model::mindlin, "yade", "mindlin", "tsuji", deck_damping_kind::coefficient, yade_version,
+     "pkg/dem/HertzMindlin.cpp (Ip2_FrictMat_FrictMat_MindlinPhys, Law2_ScGeom_MindlinPhys_Mindlin)", true},
 }};
 
 /// The model for a code and damping name, or invalid_parameter naming the bad value.
@@ -70,14 +76,13 @@ inline const dem_model& find_dem_model(const std::string& code, const std::strin
     code_known = true;
     if (m.damping_name == damping) return m;
   }
-  if (code == "yade")
-    throw invalid_parameter(
-        "code 'yade' is not supported: YADE 2023.02a clamps the normal force at zero (no attraction) in both its "
-        "visco-elastic and Hertz-Mindlin laws, which viscor's force law does not; see docs/dem.md");
-  if (!code_known) throw invalid_parameter("unknown DEM code '" + code + "': expected lammps or liggghts");
+  if (!code_known) throw invalid_parameter("unknown DEM code '" + code + "': expected lammps, liggghts or yade");
   std::string names;
   for (const auto& m : dem_models)
     if (m.code_name == code) names += (names.empty() ? "" : ", ") + std::string(m.damping_name);
+  if (code == "yade" && damping == "viscoelastic")
+    throw invalid_parameter("damping model 'viscoelastic' (Law2_ScGeom_ViscElPhys_Basic, a linear spring) is not "
+                            "supported yet: it has no Hertz stiffness from the material; expected one of " + names);
   if (code == "lammps" && damping == "coeff_restitution")
     throw invalid_parameter("damping model 'coeff_restitution' is not in the installed LAMMPS (29 Sep 2021; it came "
                             "with the granular rewrite of 2023): expected one of " + names);
