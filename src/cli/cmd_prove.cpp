@@ -19,7 +19,7 @@ struct prove_command {
   int digits = 30;
 
   void run() const {
-    using namespace viscor::enclose;
+    using namespace viscor::proofs;
     const contact_law model = law.resolve();
     if (gamma.empty()) throw invalid_parameter("--gamma is required");
     if (g.empty()) throw invalid_parameter("--g is required");
