@@ -34,6 +34,7 @@ struct proven_bounds {
   std::string lower;  ///< a decimal <= the exact value
   std::string upper;  ///< a decimal >= the exact value
   int digits = 0;     ///< d: both bounds round (to nearest) to the same d-digit decimal; 0 if none
+  std::string rounded;  ///< that decimal: the exact value correctly rounded to `digits` digits (empty if none)
 };
 
 /// What enclose() proved about one impact.
@@ -103,6 +104,7 @@ inline proven_bounds bounds_of(const ball& x, int cap) {
     mpfr_free_str(s_lo);
     mpfr_free_str(s_hi);
   }
+  if (b.digits > 0) b.rounded = decimal(lo, b.digits, MPFR_RNDN);
   // Enough digits that the two bounds differ where the ball does (and at least 10).
   const int shown = std::max(10, std::min(cap, relative) + 5);
   b.lower = decimal(lo, shown, MPFR_RNDD);
