@@ -140,6 +140,9 @@ TEST(ProveCli, ProvesAStick) {
   const auto r = viscor::test::run_cli("prove --model kuwabara_kono --gamma 0.5 --g 3 --digits 20 --json");
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(json::parse(r.out)["outcome"], "stick") << r.out;
+  EXPECT_EQ(json::parse(r.out)["e_upper"], "0") << r.out;
+  const auto text = viscor::test::run_cli("prove --model kuwabara_kono --gamma 0.5 --g 3 --digits 20");
+  EXPECT_NE(text.out.find("e in       0 (exact)"), std::string::npos) << text.out;
 }
 
 TEST(ProveCli, BadInputExits2WithoutOutput) {

@@ -28,6 +28,10 @@ inline proofs::cor_enclosure add_proof(const contact_law& law, const std::string
     j[std::string(name) + "_lower"] = b.lower;
     j[std::string(name) + "_upper"] = b.upper;
     j[main ? std::string("proven_digits") : "proven_digits_" + std::string(name)] = b.digits;
+    if (b.lower == b.upper) {  // an exact value (e = 0 of a stick, 1 - e = 0 at gamma = 0)
+      text << label << b.lower << " (exact)\n";
+      return;
+    }
     text << label << "[" << b.lower << ", " << b.upper << "]\n           " << b.digits
          << " proven correctly rounded digits" << (b.digits > 0 ? ": " + b.rounded : std::string()) << "\n";
   };
