@@ -24,7 +24,7 @@
 namespace {
 
 using namespace viscor;
-using namespace viscor::enclose;
+using namespace viscor::proofs;
 
 /// The closed-form value as a ball that also holds 10^-(2 digits + 10) for its own rounding.
 ball truth(const mpfr_real& x, int digits) {

@@ -18,7 +18,7 @@
 namespace {
 
 using namespace viscor;
-using namespace viscor::enclose;
+using namespace viscor::proofs;
 
 TEST(Enclose, ContainsTheClosedFormAt30And50And100Digits) {
   for (int digits : {30, 50, 100}) {

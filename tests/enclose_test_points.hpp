@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-namespace viscor::enclose {
+namespace viscor::proofs {
 
 struct sample_point {
   std::string gamma, g;  ///< exact decimals
@@ -111,4 +111,4 @@ inline comparison check_against_closed_form(const std::vector<sample_point>& poi
   return c;
 }
 
-}  // namespace viscor::enclose
+}  // namespace viscor::proofs

@@ -11,6 +11,10 @@
 #include <viscor/core/scaling.hpp>
 #include <viscor/impact/solve_impact.hpp>
 
+#if VISCOR_HAS_ARB
+#include "proof_output.hpp"
+#endif
+
 #include <chrono>
 #include <map>
 #include <sstream>
@@ -51,7 +55,20 @@ struct cor_command {
   int digits = 15;
   unsigned threads = 1;
   std::size_t max_steps = solve_options<double>{}.max_steps;
-  bool certify = false;
+  bool certify = false, prove = false;
+
+  /// --prove needs exact decimal inputs and rational exponents: checked before any work.
+  void check_provable(const contact_law& model, bool is_physical) const {
+    if (is_physical)
+      throw invalid_parameter("--prove needs the scaled --gamma and --g (exact decimals), not physical inputs");
+    for (const auto& [name, x] : {std::pair<const char*, const exponent*>{"alpha", &model.alpha}, {"beta", &model.beta}})
+      if (!x->is_rational())
+        throw invalid_parameter("not provable: exponent " + std::string(name) + " = " + x->to_string() +
+                                " is not rational (the proof needs u = s^Q at the end points)");
+#if !VISCOR_HAS_ARB
+    throw invalid_parameter("--prove: this viscor was built without Arb (apt-get install libflint-arb-dev)");
+#endif
+  }
 
   void run() {
     if (points) return run_points();
@@ -68,6 +85,7 @@ struct cor_command {
       physical.check("cor");
       if (!physical.gamma0) throw invalid_parameter("cor: physical mode needs --gamma0 (the damping coefficient, SI)");
     }
+    if (prove) check_provable(model, is_physical);
     const integration_method how = parse_method(method);
     with_working_precision(digits, [&]<class Real>() {
       json j;
@@ -130,13 +148,16 @@ struct cor_command {
            << "seconds    " << seconds << " s\n"
            << "digits     " << decimal_digits<Real>() << " (working precision)\n";
       if (certify) certify_and_report<Real>(model, gamma_value, g_value, text, j);
+#if VISCOR_HAS_ARB
+      if (prove) add_proof(model, *gamma, g ? *g : std::string("0"), digits, text, j);
+#endif
       output.emit(text.str(), j);
     });
   }
 
   void run_points() const {
     if (gamma || g || physical.given() || deprecated_physical || !law.model.empty() || !law.alpha.empty() ||
-        certify || output.json || !output.path.empty())
+        certify || prove || output.json || !output.path.empty())
       throw invalid_parameter("--points reads the law, gamma, g and digits of every point from its file; give only "
                               "--points, --threads, --method, --tolerance and --max-steps with it");
     if (threads < 1) throw invalid_parameter("--threads must be >= 1, got " + std::to_string(threads));
@@ -181,6 +202,9 @@ void setup(CLI::App& app) {
       ->check(CLI::Range(1.0, 1e12));
   app.add_flag("--certify", cmd->certify,
                "certify the digits: Taylor at two precisions and the independent adaptive method must agree");
+  app.add_flag("--prove", cmd->prove,
+               "also prove the digits: enclosures of e, 1 - e, T_f and u_max in ball arithmetic at --digits "
+               "(rational exponents; docs/proofs.md)");
   app.callback([cmd] { cmd->run(); });
 }
 

@@ -1,10 +1,10 @@
-// viscor prove: a proven enclosure of e, 1 - e and T_f in ball arithmetic
+// viscor prove: a proven enclosure of e, 1 - e, T_f and u_max in ball arithmetic
 // (docs/proofs.md); built when Arb is found (VISCOR_HAS_ARB).
 #include "cli_common.hpp"
 #include "command_registry.hpp"
 
 #if VISCOR_HAS_ARB
-#include <viscor/enclose/proven_impact.hpp>
+#include "proof_output.hpp"
 
 #include <algorithm>
 #include <sstream>
@@ -19,44 +19,35 @@ struct prove_command {
   int digits = 30;
 
   void run() const {
-    using namespace viscor::enclose;
+    using namespace viscor::proofs;
     const contact_law model = law.resolve();
     if (gamma.empty()) throw invalid_parameter("--gamma is required");
     if (g.empty()) throw invalid_parameter("--g is required");
-    const proven_impact p = prove_impact(model, gamma, g, digits);
-
     json j;
     j["command"] = "prove";
     j["law"] = law_json(model);
     j["gamma"] = gamma, j["g"] = g;
     j["precision"] = {{"digits", digits}, {"binary_digits", working_bits(digits)}};
-    j["outcome"] = std::string(to_string(p.outcome));
-    j["proof"] = p.how;
-    j["steps"] = p.steps;
     std::ostringstream text;
-    text << "law        " << model.describe() << "\ngamma      " << gamma << "\ng          " << g << "\n"
-         << "outcome    " << to_string(p.outcome) << " (proven: " << p.how << ")\n";
+    text << "law        " << model.describe() << "\ngamma      " << gamma << "\ng          " << g << "\n";
+    const cor_enclosure proof = add_proof(model, gamma, g, digits, text, j);
+    const proven_impact& p = proof.balls;
+    j["outcome"] = std::string(to_string(p.outcome));
+    j["steps"] = p.steps;
     if (p.outcome == proven_outcome::rebound) {
-      // Each value printed with its proven digits + 2 (the printout's own rounding
-      // is added to the printed radius, so fewer digits would hide proven ones).
+      // Each ball as Arb prints it, with its relative digits + 2 (the printout's own
+      // rounding is added to the printed radius, so fewer digits would hide proven ones).
       auto shown = [](const ball& x) { return std::max(10, proven_impact::relative_digits(x) + 2); };
-      json enclosure, proven;
+      json enclosure;
       for (const auto& [name, value] : {std::pair<const char*, const ball*>{"e", &p.e},
                                         {"one_minus_e", &p.one_minus_e},
                                         {"contact_time", &p.contact_time}}) {
         j[name] = value->mid_str(shown(*value));
         enclosure[name] = value->str(shown(*value));
-        proven[name] = proven_impact::relative_digits(*value);
       }
       j["enclosure"] = enclosure;
-      j["proven_digits"] = proven;
-      text << "e          " << p.e.str(shown(p.e)) << "\n1 - e      " << p.one_minus_e.str(shown(p.one_minus_e))
-           << "\nT_f        " << p.contact_time.str(shown(p.contact_time)) << "\nproven     " << proven["e"]
-           << " digits (e), " << proven["one_minus_e"] << " (1 - e), " << proven["contact_time"]
-           << " (T_f): relative width of each enclosure\n";
     } else if (p.outcome == proven_outcome::stick) {
       j["e"] = "0", j["one_minus_e"] = "1";
-      text << "e          0 (exact)\n";
     }
     text << "steps      " << p.steps << "\n";
     output.emit(text.str(), j);

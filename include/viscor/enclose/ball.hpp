@@ -17,9 +17,9 @@
 #include <string_view>
 #include <utility>
 
-/// @namespace viscor::enclose
+/// @namespace viscor::proofs
 /// Proven enclosures: ball arithmetic, validated Taylor steps, proven impacts (docs/proofs.md).
-namespace viscor::enclose {
+namespace viscor::proofs {
 
 namespace detail {
 /// Precision of every ball operation on this thread, in bits.
@@ -225,4 +225,4 @@ inline ball pow(const ball& x, unsigned long n) {
 /// bits that absorb the widening of the enclosure over an impact (measured: docs/proofs.md).
 inline slong working_bits(int digits) { return static_cast<slong>(std::ceil(digits * 3.3219280948873623)) + 64; }
 
-}  // namespace viscor::enclose
+}  // namespace viscor::proofs

@@ -8,7 +8,7 @@
 #include <cstddef>
 #include <vector>
 
-namespace viscor::enclose::series {
+namespace viscor::proofs::series {
 
 /// (a b)_k = sum_{j<=k} a_j b_{k-j}.
 inline ball product(const std::vector<ball>& a, const std::vector<ball>& b, std::size_t k) {
@@ -49,4 +49,4 @@ inline ball monomial(const std::vector<ball>& s0_powers, long m, int d, std::siz
   return (d < 0 && k % 2 == 1) ? -r : r;
 }
 
-}  // namespace viscor::enclose::series
+}  // namespace viscor::proofs::series

@@ -25,6 +25,10 @@
 // v >= 3/4, in tau until an s-step reaches a tenth of the way to s = 0; near
 // either singular point the series of the other variable converge slowly.
 //
+// u_max: v falls through 0 in the tau phase; the first step in which it may
+// vanish encloses the turning point by interval Newton (crossing.hpp,
+// first_maximum), and u_max = u there.
+//
 // Outcomes: rebound (v proven negative over every step of the way out, so the
 // first return to u = 0 is the end of the last step); stick when E is proven
 // negative (E never increases and E >= 0 at u = 0, so the bead never gets back);
@@ -36,6 +40,7 @@
 
 #include <viscor/core/contact_law.hpp>
 #include <viscor/enclose/ball_series.hpp>
+#include <viscor/enclose/crossing.hpp>
 #include <viscor/enclose/proven_result.hpp>
 #include <viscor/enclose/validated_taylor.hpp>
 
@@ -47,7 +52,7 @@
 #include <string_view>
 #include <vector>
 
-namespace viscor::enclose {
+namespace viscor::proofs {
 
 /// The constants of one proof, as balls (exact where the inputs are dyadic).
 struct impact_ball_constants {
@@ -130,20 +135,31 @@ namespace detail {
 inline ball energy(const impact_ball_constants& k, const ball& u, const ball& v) {
   ball spring;
   const ball a1 = k.alpha + 1;
-  arb_pow(spring.get(), u.get(), a1.get(), enclose::ball_bits());
+  arb_pow(spring.get(), u.get(), a1.get(), proofs::ball_bits());
   return v * v / 2 + spring / a1 - k.g * u;
+}
+
+/// v' = g - u^alpha - gamma beta u^(beta-1) v over a ball state (u, v, ...), u > 0.
+inline ball acceleration(const impact_ball_constants& k, const std::vector<ball>& x) {
+  ball spring, damping(1);
+  arb_pow(spring.get(), x[0].get(), k.alpha.get(), proofs::ball_bits());
+  if (!k.beta_is_one) {
+    const ball beta_minus_one = k.beta - 1;
+    arb_pow(damping.get(), x[0].get(), beta_minus_one.get(), proofs::ball_bits());
+  }
+  return k.g - spring - k.gamma_beta * damping * x[1];
 }
 
 inline ball root(const ball& u, long Q) {
   ball s;
-  arb_root_ui(s.get(), u.get(), static_cast<ulong>(Q), enclose::ball_bits());
+  arb_root_ui(s.get(), u.get(), static_cast<ulong>(Q), proofs::ball_bits());
   return s;
 }
 
 inline ball upper_bound(const ball& x) {
   arf_t u;
   arf_init(u);
-  arb_get_ubound_arf(u, x.get(), enclose::ball_bits());
+  arb_get_ubound_arf(u, x.get(), proofs::ball_bits());
   ball b;
   arb_set_arf(b.get(), u);
   arf_clear(u);
@@ -182,7 +198,7 @@ inline proven_impact prove_impact(const contact_law& law, std::string_view gamma
   k.beta_is_one = law.beta.numerator() == law.beta.denominator();
 
   const double log2_tolerance =
-      -static_cast<double>(options.step_tolerance_bits > 0 ? options.step_tolerance_bits : enclose::ball_bits());
+      -static_cast<double>(options.step_tolerance_bits > 0 ? options.step_tolerance_bits : proofs::ball_bits());
   const std::size_t order = detail::proof_order(log2_tolerance);
   proven_impact result;
   auto undecided = [&result](std::string why) {
@@ -215,12 +231,15 @@ inline proven_impact prove_impact(const contact_law& law, std::string_view gamma
   std::vector<ball> y{pow(x[0], static_cast<unsigned long>(k.Q)), x[1], x[3]};  // u, v, D
   ball tau = x[2];
   s_system out{&k, -1};
+  first_maximum turning;  // u_max: v falls through 0 in this phase (v >= 1/4 before, v < 0 after)
   last_size = 0;
   for (;;) {
     if (++result.steps > options.max_steps) return undecided("step budget exhausted in tau");
     const auto step = find_step(mid, mid.jet(y, order), order, log2_tolerance, last_size, options.max_halvings,
                                 [](const step_enclosure& st) { return st.range[0].positive(); });
     if (!step) return undecided("no validated step in tau at tau = " + tau.mid_str(10));
+    turning.add(*step, 0, 1, [&k](const std::vector<ball>& state) { return detail::acceleration(k, state); });
+    result.max_compression = turning.value();
     y = step->state_at(step->h);
     tau = tau + step->h;
     if (detail::energy(k, y[0], y[1]).negative()) {
@@ -261,4 +280,4 @@ inline proven_impact prove_impact(const contact_law& law, std::string_view gamma
   }
 }
 
-}  // namespace viscor::enclose
+}  // namespace viscor::proofs

@@ -20,6 +20,7 @@
 //   v > 0 >= c u there: at g = 0 every gamma >= 2 sticks, as the closed form says.)
 // - g < 0, or g = 0 with gamma < 2: the bead always comes back; only rebound can
 //   be proven.
+// u_max: the first zero of v, enclosed by interval Newton on its step (crossing.hpp).
 // Anything else within the step budget, or a step that cannot be validated down to
 // a tiny size (the bead grazing u = 0 at the sticking threshold), is undecided.
 #pragma once
@@ -34,7 +35,7 @@
 #include <string_view>
 #include <vector>
 
-namespace viscor::enclose {
+namespace viscor::proofs {
 
 /// u' = v, v' = g - gamma v - u, w' = 2 gamma v^2, in balls.
 struct linear_contact_system {
@@ -85,6 +86,8 @@ inline proven_impact prove_linear_impact(std::string_view gamma_text, std::strin
   proven_impact result;
   std::vector<ball> x{ball(0), ball(1), ball(0)};
   ball t(0);
+  first_maximum turning;  // u_max at the first zero of v (crossing.hpp)
+  const auto acceleration = [&](const std::vector<ball>& state) { return g - gamma * state[1] - state[0]; };
   for (std::size_t n = 0; n < options.max_steps; ++n) {
     result.steps = n + 1;
     const ball_jet jet = system.jet(x, order);
@@ -115,10 +118,14 @@ inline proven_impact prove_linear_impact(std::string_view gamma_text, std::strin
       result.e = -at_exit[1];
       result.one_minus_e = at_exit[2] / (1 + result.e);
       result.contact_time = t + *crossing;
+      turning.add(step, 0, 1, acceleration);  // v's last zero may be on this step's start
+      result.max_compression = turning.value();
       result.how = "u crosses 0 with v < 0 (interval Newton on the validated step)";
       if (!result.e.positive()) result.outcome = proven_outcome::undecided, result.how = "e not proven > 0";
       return result;
     }
+    turning.add(step, 0, 1, acceleration);
+    result.max_compression = turning.value();
     x = step.state_at(step.h);
     t = t + step.h;
     const ball energy = x[1] * x[1] / 2 + x[0] * x[0] / 2 - g * x[0];
@@ -139,4 +146,4 @@ inline proven_impact prove_linear_impact(std::string_view gamma_text, std::strin
   return result;
 }
 
-}  // namespace viscor::enclose
+}  // namespace viscor::proofs

@@ -5,10 +5,11 @@
 
 #include <cmath>
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <string_view>
 
-namespace viscor::enclose {
+namespace viscor::proofs {
 
 /// rebound: the bead provably leaves the wall, e > 0 enclosed. stick: it provably
 /// never reaches u = 0 again (e = 0). undecided: the working precision (or the step
@@ -26,6 +27,9 @@ struct proven_impact {
   ball e;             ///< rebound: encloses e; stick: exactly 0
   ball one_minus_e;   ///< from the dissipated energy, so its relative width survives gamma -> 0
   ball contact_time;  ///< rebound: encloses T_f (scaled time)
+  /// Encloses u_max, the compression where u' first vanishes, once the integration
+  /// has passed it (every rebound; a stick only if proven after the turning point).
+  std::optional<ball> max_compression;
   std::string how;    ///< the argument that decided the outcome (or why it is undecided)
   std::size_t steps = 0;
 
@@ -52,4 +56,4 @@ struct proof_options {
   int step_tolerance_bits = 0;
 };
 
-}  // namespace viscor::enclose
+}  // namespace viscor::proofs

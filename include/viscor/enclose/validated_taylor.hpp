@@ -28,7 +28,7 @@
 #include <optional>
 #include <vector>
 
-namespace viscor::enclose {
+namespace viscor::proofs {
 
 /// Taylor coefficients [component][order] in balls.
 using ball_jet = std::vector<std::vector<ball>>;
@@ -191,4 +191,4 @@ std::optional<step_enclosure> find_step(const S& system, const ball_jet& jet, st
   return std::nullopt;
 }
 
-}  // namespace viscor::enclose
+}  // namespace viscor::proofs

@@ -1,0 +1,45 @@
+// The proven enclosure of one impact in the output of `viscor prove` and
+// `viscor cor --prove` (docs/proofs.md): the same JSON names in both (docs/json-schema.md).
+#pragma once
+
+#include "cli_common.hpp"
+
+#include <viscor/enclose/enclose.hpp>
+
+#include <sstream>
+#include <string>
+
+namespace viscor::cli {
+
+/// Proves the impact of `law` at the exact decimals (gamma, g) with viscor::enclose
+/// and adds the bounds, proven digits and proven outcome to `j` and `text`.
+/// Throws invalid_parameter ("not provable: ...") for non-rational exponents.
+inline proofs::cor_enclosure add_proof(const contact_law& law, const std::string& gamma, const std::string& g,
+                                       int digits, std::ostringstream& text, json& j) {
+  const proofs::cor_enclosure p = viscor::enclose(law, gamma, g, digits);
+  j["outcome_proven"] = std::string(proofs::to_string(p.outcome));
+  j["proof"] = p.how;
+  text << "proven     " << proofs::to_string(p.outcome) << " (" << p.how << ")\n";
+  if (p.outcome == proofs::proven_outcome::undecided) {
+    j["proven_digits"] = 0;
+    return p;
+  }
+  const auto show = [&](const char* name, const char* label, const proofs::proven_bounds& b, bool main) {
+    j[std::string(name) + "_lower"] = b.lower;
+    j[std::string(name) + "_upper"] = b.upper;
+    j[main ? std::string("proven_digits") : "proven_digits_" + std::string(name)] = b.digits;
+    if (b.lower == b.upper) {  // an exact value (e = 0 of a stick, 1 - e = 0 at gamma = 0)
+      text << label << b.lower << " (exact)\n";
+      return;
+    }
+    text << label << "[" << b.lower << ", " << b.upper << "]\n           " << b.digits
+         << " proven correctly rounded digits" << (b.digits > 0 ? ": " + b.rounded : std::string()) << "\n";
+  };
+  show("e", "e in       ", p.e, true);
+  show("one_minus_e", "1 - e in   ", p.one_minus_e, false);
+  if (p.contact_time) show("contact_time", "T_f in     ", *p.contact_time, false);
+  if (p.max_compression) show("max_compression", "u_max in   ", *p.max_compression, false);
+  return p;
+}
+
+}  // namespace viscor::cli
