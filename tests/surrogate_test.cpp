@@ -80,6 +80,39 @@ TEST_P(CommittedSurrogate, FileReadsBackIdentically) {
     }
 }
 
+TEST_P(CommittedSurrogate, ThresholdPowerIsAppliedAndReadBack) {
+  // The threshold line holds h = ln gamma_c + p ln g (cor_surrogate::threshold_power).
+  // Adding p x to the line exactly (p mid to T_0, p half-width to T_1 of each interval)
+  // and setting threshold_power = p must leave gamma_c unchanged, also after a write
+  // and read (file version 2 when p != 0).
+  const auto s = viscor::test::load_committed_surrogate(GetParam());
+  if (!s) GTEST_SKIP() << "no committed surrogate for " << GetParam();
+  cor_surrogate t = *s;
+  const double p = t.threshold_power + 0.75;
+  auto& line = t.log_gamma_c;
+  for (std::size_t k = 0; k + 1 < line.breaks.size(); ++k) {
+    const double a = line.breaks[k], b = line.breaks[k + 1];
+    line.coefficients[k * static_cast<std::size_t>(line.order)] += 0.75 * (a + b) / 2;
+    line.coefficients[k * static_cast<std::size_t>(line.order) + 1] += 0.75 * (b - a) / 2;
+  }
+  t.threshold_power = p;
+  std::stringstream text;
+  write_cor_surrogate(text, t);
+  EXPECT_EQ(text.str().rfind("viscor-cor-surrogate 2\n", 0), 0u);
+  const std::string path = ::testing::TempDir() + "/power.surrogate";
+  {
+    std::ofstream out(path);
+    out << text.str();
+  }
+  const cor_surrogate u = read_cor_surrogate(path);
+  EXPECT_EQ(u.threshold_power, p);
+  for (double g : {s->g_split * 1.5, 0.3, 1.0, 57.0, 2000.0, 1e4}) {
+    if (!(g > s->g_split)) continue;
+    EXPECT_NEAR(u.critical_gamma(g) / s->critical_gamma(g), 1.0, 1e-13) << g;
+    EXPECT_EQ(u.critical_gamma(g), t.critical_gamma(g)) << g;
+  }
+}
+
 TEST_P(CommittedSurrogate, OutsideTheDomainNothingIsReturned) {
   const auto s = viscor::test::load_committed_surrogate(GetParam());
   if (!s) GTEST_SKIP() << "no committed surrogate for " << GetParam();

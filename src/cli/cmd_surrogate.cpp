@@ -67,7 +67,7 @@ surrogate_spec read_surrogate_spec(const std::string& path) {
   };
   for (auto it = j.begin(); it != j.end(); ++it) {
     static const std::set<std::string> known{"description", "law", "gamma_max", "g_min", "g_max", "gamma_ext",
-                                             "order", "threshold_order", "fit_fraction", "truth", "points", "seed",
+                                             "order", "threshold_order", "threshold_power", "fit_fraction", "truth", "points", "seed",
                                              "digits", "min_certified_digits", "safety_factor", "targets", "comment"};
     if (!known.count(it.key())) throw parse_error(path + ": field " + it.key() + ": unknown field");
   }
@@ -87,6 +87,9 @@ surrogate_spec read_surrogate_spec(const std::string& path) {
   number("gamma_ext", s.fit.gamma_ext);
   integer("order", s.fit.order);
   integer("threshold_order", s.fit.threshold_order);
+  number("threshold_power", s.fit.threshold_power);
+  if (!(s.fit.threshold_power >= 0 && s.fit.threshold_power <= 10))
+    throw parse_error(path + ": field threshold_power: must be in [0, 10], got " + std::to_string(s.fit.threshold_power));
   number("fit_fraction", s.fit.fit_fraction);
   if (const json* t = field("truth")) {
     if (*t != "long double" && *t != "double")
@@ -125,6 +128,7 @@ surrogate_spec read_surrogate_spec(const std::string& path) {
                   {"min_certified_digits", s.min_certified_digits}, {"safety_factor", s.safety_factor},
                   {"targets", {{"abs_e", s.targets.abs_e}, {"abs_e_squared", s.targets.abs_e_squared},
                                {"rel_one_minus_e", s.targets.rel_one_minus_e}, {"small_gamma", s.targets.small_gamma}}}};
+  if (s.fit.threshold_power != 0) s.normalised["threshold_power"] = s.fit.threshold_power;
   if (j.contains("description")) s.normalised["description"] = j["description"];
   return s;
 }

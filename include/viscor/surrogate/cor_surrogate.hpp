@@ -123,7 +123,14 @@ struct cor_surrogate {
   double gamma_max = 1, g_min = -0.5, g_max = 1e4;  ///< the domain
   double gamma_ext = 1.5;  ///< the low-load region ends where g_c(gamma_ext) is
   double g_split = 0;
-  patch_line log_gamma_c;  ///< ln gamma_c as a function of ln g on [ln g_split, ln g_max]
+  /// ln gamma_c(g) = log_gamma_c(ln g) - threshold_power ln g on [ln g_split, ln g_max]: the
+  /// fitted line holds ln(g^p gamma_c), which stays O(1) where gamma_c follows a power law.
+  /// NOTE: ln gamma_c itself reaches -20 at large g (linear law: gamma_c ~ 1/(2 pi g^2)),
+  /// and a double near 20 is only good to 3.6e-15: gamma_c = exp(ln gamma_c) in double
+  /// would jitter by ~1e-14 from one g to the next, and G with it near the threshold.
+  /// With g^-p taken out, gamma_c = exp(h) pow(g, -p) is good to a few 1e-16.
+  patch_line log_gamma_c;
+  double threshold_power = 0;
   patch_tree low_load, high_load;
   surrogate_bound bound;
 
@@ -133,7 +140,12 @@ struct cor_surrogate {
   }
 
   /// gamma_c(g) for g_split <= g <= g_max: the bead sticks for gamma >= gamma_c.
-  double critical_gamma(double g) const noexcept { return std::exp(log_gamma_c(std::log(g))); }
+  double critical_gamma(double g) const noexcept { return critical_gamma_at(g, std::log(g)); }
+  /// The same, given x = ln g.
+  double critical_gamma_at(double g, double x) const noexcept {
+    const double h = std::exp(log_gamma_c(x));
+    return threshold_power == 0 ? h : h * std::pow(g, -threshold_power);
+  }
 
   /// e, 1 - e and the outcome at (gamma, g); in_domain false (and nothing else set) outside the domain.
   surrogate_value operator()(double gamma, double g) const noexcept {
@@ -145,7 +157,7 @@ struct cor_surrogate {
       G = low_load(gamma, g);
     } else {
       const double x = std::log(g);
-      const double r = gamma / std::exp(log_gamma_c(x));
+      const double r = gamma / critical_gamma_at(g, x);
       if (r >= 1) return stick(v, 1 - r);
       w = r;
       G = high_load(x, std::sqrt(1 - r));
@@ -172,7 +184,7 @@ struct cor_surrogate {
     const double dissipated = (1 - e_target) * (1 + e_target);
     if (!(dissipated > 0)) return 0;
     if (g <= g_split) return solve_dissipation(low_load, /*x_free=*/true, g, dissipated, gamma_max);
-    const double x = std::log(g), gc = std::exp(log_gamma_c(x));
+    const double x = std::log(g), gc = critical_gamma_at(g, x);
     return solve_dissipation(high_load, /*x_free=*/false, x, dissipated, std::min(1.0, gamma_max / gc)) * gc;
   }
 
@@ -323,13 +335,16 @@ inline patch_tree read_tree(reader& r, const std::string& name) {
 /// Writes the surrogate as text (exact: 17 significant digits per double).
 inline void write_cor_surrogate(std::ostream& out, const cor_surrogate& s) {
   out << std::setprecision(17);
-  out << "viscor-cor-surrogate 1\n";
+  // Version 2 adds the threshold power; without one the file stays version 1.
+  out << "viscor-cor-surrogate " << (s.threshold_power == 0 ? 1 : 2) << '\n';
   out << "law " << (s.law_name.empty() ? "-" : s.law_name) << ' ' << s.alpha << ' ' << s.beta << '\n';
   out << "domain " << s.gamma_max << ' ' << s.g_min << ' ' << s.g_max << '\n';
   out << "split " << s.gamma_ext << ' ' << s.g_split << '\n';
   out << "bound " << s.bound.abs_e << ' ' << s.bound.abs_e_squared << ' ' << s.bound.rel_one_minus_e << ' '
       << s.bound.safety_factor << '\n';
-  out << "threshold " << s.log_gamma_c.order << ' ' << s.log_gamma_c.breaks.size() << '\n';
+  out << "threshold " << s.log_gamma_c.order << ' ' << s.log_gamma_c.breaks.size();
+  if (s.threshold_power != 0) out << ' ' << s.threshold_power;
+  out << '\n';
   detail::write_doubles(out, s.log_gamma_c.breaks, s.log_gamma_c.breaks.size());
   detail::write_doubles(out, s.log_gamma_c.coefficients, static_cast<std::size_t>(s.log_gamma_c.order));
   detail::write_tree(out, "low_load", s.low_load);
@@ -344,7 +359,8 @@ inline cor_surrogate read_cor_surrogate(const std::string& path) {
   detail::reader r{in, path};
   cor_surrogate s;
   r.expect("viscor-cor-surrogate");
-  if (r.next<int>("version") != 1) throw parse_error(path + ": surrogate file: unknown version");
+  const int version = r.next<int>("version");
+  if (version != 1 && version != 2) throw parse_error(path + ": surrogate file: unknown version");
   r.expect("law");
   s.law_name = r.next<std::string>("law name");
   if (s.law_name == "-") s.law_name.clear();
@@ -359,6 +375,8 @@ inline cor_surrogate read_cor_surrogate(const std::string& path) {
   r.expect("threshold");
   s.log_gamma_c.order = r.next<int>("threshold order");
   const auto breaks = r.next<std::size_t>("threshold breaks");
+  if (version >= 2) s.threshold_power = r.next<double>("threshold power");
+  if (!std::isfinite(s.threshold_power)) throw parse_error(path + ": surrogate file: bad threshold power");
   if (s.log_gamma_c.order < 2 || s.log_gamma_c.order > 64 || breaks < 2 || breaks > 100000)
     throw parse_error(path + ": surrogate file: bad threshold sizes");
   s.log_gamma_c.breaks.resize(breaks);

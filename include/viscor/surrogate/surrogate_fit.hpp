@@ -46,6 +46,10 @@ struct fit_settings {
   int max_depth = 40;         ///< halvings of one patch, at most
   std::size_t max_patches = 20000;  ///< per region; more means the fit does not converge: an error
   bool long_double_truth = true;  ///< solve in long double (else double)
+  /// p in gamma_c(g) = g^-p exp(h(ln g)): the threshold is fitted as h = ln gamma_c + p ln g
+  /// (cor_surrogate::threshold_power). 0 fits ln gamma_c itself; the large-g power law of
+  /// gamma_c (2 for the linear law) keeps h and its rounding small.
+  double threshold_power = 0;
 };
 
 /// Counters of a fit, for the sidecar.
@@ -68,7 +72,7 @@ inline std::string exact_text_short(double x) {
 /// The solver's answer at one point, in the form the fit needs.
 struct truth_sample {
   double e = 0;           ///< 0 for a stick
-  double dissipated = 1;  ///< 1 - e^2 at full relative precision; past the threshold, 1 - (signed e^2)
+  long double dissipated = 1;  ///< 1 - e^2 at full relative precision; past the threshold, 1 - (signed e^2)
 };
 
 class truth {
@@ -77,7 +81,7 @@ class truth {
     m_alpha = m_law.alpha.value<long double>();
   }
 
-  truth_sample operator()(double gamma, double g) {
+  truth_sample operator()(long double gamma, long double g) {
     ++solves;
     try {
       return m_long ? sample<long double>(gamma, g) : sample<double>(gamma, g);
@@ -145,18 +149,18 @@ class truth {
 
  private:
   template <class Real>
-  truth_sample sample(double gamma, double g) {
+  truth_sample sample(long double gamma, long double g) {
     const auto r = solve_impact<Real>(m_law, Real(gamma), Real(g));
     truth_sample s;
     if (r.outcome == impact_outcome::rebound) {
       s.e = static_cast<double>(r.e);
-      s.dissipated = static_cast<double>(r.one_minus_e * (1 + r.e));
+      s.dissipated = static_cast<long double>(r.one_minus_e * (1 + r.e));
     } else {
       // Past the threshold the bead turns back at u_s > 0 with energy
       // u_s^(alpha+1)/(alpha+1) - g u_s < 0: the continuation of e^2 / 2 through the threshold.
       const long double u = static_cast<long double>(r.stop_overlap);
       const long double signed_e2 = 2 * (std::pow(u, m_alpha + 1) / (m_alpha + 1) - static_cast<long double>(g) * u);
-      s.dissipated = static_cast<double>(1 - signed_e2);
+      s.dissipated = 1 - signed_e2;
     }
     return s;
   }
@@ -274,8 +278,8 @@ inline long double critical_gamma_at(truth& t, long double g, long double guess)
 #endif
 }
 
-/// ln gamma_c(ln g) on [x0, x1] by adaptively halved Chebyshev intervals.
-inline patch_line fit_threshold(truth& t, double x0, double x1, int order, double tolerance, fit_report& report,
+/// ln gamma_c(e^x) + power x on [x0, x1] by adaptively halved Chebyshev intervals.
+inline patch_line fit_threshold(truth& t, double x0, double x1, int order, double power, double tolerance, fit_report& report,
                                 const std::function<void(const std::string&)>& progress) {
   patch_line line;
   line.order = order;
@@ -290,7 +294,7 @@ inline patch_line fit_threshold(truth& t, double x0, double x1, int order, doubl
     auto ln_gamma_c = [&](long double x) {
       const long double gc = critical_gamma_at(t, std::exp(x), guess);
       guess = gc;
-      return std::log(gc);
+      return std::log(gc) + static_cast<long double>(power) * x;
     };
     std::vector<long double> f(static_cast<std::size_t>(order));
     for (int k = order - 1; k >= 0; --k)  // points[k] increase as k decreases: walk from a to b
@@ -316,6 +320,24 @@ inline patch_line fit_threshold(truth& t, double x0, double x1, int order, doubl
   }
   report.threshold_intervals = line.breaks.size() - 1;
   return line;
+}
+
+/// gamma_c at x = ln g from the fitted threshold, evaluated in long double: the fit
+/// samples G at the exact point (x, y) it stands for, free of the ~1e-16 rounding of
+/// the double evaluation (which the verification measures instead).
+inline long double critical_gamma_long(const cor_surrogate& s, long double x) {
+  const auto& line = s.log_gamma_c;
+  std::size_t k = 0;
+  while (k + 2 < line.breaks.size() && x >= line.breaks[k + 1]) ++k;
+  const long double a = line.breaks[k], b = line.breaks[k + 1], u = (2 * x - a - b) / (b - a);
+  const double* c = line.coefficients.data() + k * static_cast<std::size_t>(line.order);
+  long double b1 = 0, b2 = 0;
+  for (int j = line.order - 1; j >= 1; --j) {
+    const long double b0 = 2 * u * b1 - b2 + c[j];
+    b2 = b1;
+    b1 = b0;
+  }
+  return std::exp(u * b1 - b2 + c[0] - static_cast<long double>(s.threshold_power) * x);
 }
 
 /// One sample of the fitted quantity: G and what error the targets allow in it.
@@ -436,8 +458,9 @@ inline cor_surrogate fit_cor_surrogate(const fit_settings& settings, const surro
   s.g_split = static_cast<double>(
       detail::bisect_threshold(hi / 2 > 1e-3L ? hi / 2 : 0.0L, hi, [&](long double g) { return t.sticks(settings.gamma_ext, g); }));
   if (progress) progress("g_split = g_c(" + std::to_string(settings.gamma_ext) + ") = " + std::to_string(s.g_split));
+  s.threshold_power = settings.threshold_power;
   s.log_gamma_c = detail::fit_threshold(t, std::log(s.g_split), std::log(settings.g_max), settings.threshold_order,
-                                        5e-14, report, progress);
+                                        settings.threshold_power, 5e-14, report, progress);
   report.threshold_solves = t.solves;
   if (progress) progress("threshold: " + std::to_string(report.threshold_intervals) + " intervals, " +
                          std::to_string(t.solves) + " solves");
@@ -449,7 +472,7 @@ inline cor_surrogate fit_cor_surrogate(const fit_settings& settings, const surro
       s.low_load,
       [&](double gamma, double g) {
         const auto r = t(gamma, g);
-        const double G = r.dissipated / gamma;
+        const double G = static_cast<double>(r.dissipated / gamma);
         return detail::fit_sample{G, detail::allowed_error(targets, settings.fit_fraction, r.e, gamma, gamma, G)};
       },
       settings, report, progress);
@@ -463,10 +486,15 @@ inline cor_surrogate fit_cor_surrogate(const fit_settings& settings, const surro
   detail::fit_tree(
       s.high_load,
       [&](double x, double y) {
-        const double g = std::exp(x), r = 1 - y * y, gamma = r * s.critical_gamma(g);
+        // NOTE: (gamma, g) in long double at exactly the point (x, y): in double, the
+        // rounding of g = e^x and of r gamma_c would add ~1e-16 of noise to G, which the
+        // fit's check points (allowed ~3e-15 near y = 0) cannot tell from a misfit.
+        const long double g = std::exp(static_cast<long double>(x)), r = 1 - static_cast<long double>(y) * y;
+        const long double gamma = r * detail::critical_gamma_long(s, x);
         const auto sample = t(gamma, g);
-        const double G = sample.dissipated / r;
-        return detail::fit_sample{G, detail::allowed_error(targets, settings.fit_fraction, sample.e, r, gamma, G)};
+        const double G = static_cast<double>(sample.dissipated / r);
+        return detail::fit_sample{G, detail::allowed_error(targets, settings.fit_fraction, sample.e, static_cast<double>(r),
+                                                           static_cast<double>(gamma), G)};
       },
       settings, report, progress);
   report.patches_high = s.high_load.patches.size();

@@ -111,7 +111,9 @@ inline constexpr std::array<const char*, 5> region_names{"all", "small_gamma", "
 inline bool near_threshold_in_g(const cor_surrogate& s, double gamma, double g, double band) {
   if (!(g > s.g_split)) return false;
   const double x = std::log(g), h = 1e-4;
-  const double slope = std::abs((s.log_gamma_c(std::min(x + h, std::log(s.g_max))) - s.log_gamma_c(std::max(x - h, std::log(s.g_split)))) / (2 * h));
+  const double xa = std::max(x - h, std::log(s.g_split)), xb = std::min(x + h, std::log(s.g_max));
+  // d ln gamma_c / d ln g (the fitted line holds ln gamma_c + p ln g)
+  const double slope = std::abs((s.log_gamma_c(xb) - s.log_gamma_c(xa)) / (xb - xa) - s.threshold_power);
   return std::abs(std::log(gamma / s.critical_gamma(g))) <= band * std::max(slope, 1e-3);
 }
 
