@@ -269,3 +269,21 @@ TEST(adaptive_impact, energy_identity_residual_is_small) {
 }
 
 }  // namespace
+
+#if VISCOR_HAS_FLOAT128
+// Found by the linear surrogate's verification table: a tau step went through u = 0
+// (the bead leaving with e = 2.6e-5) and on below the wall, where the continued
+// motion turns (u = -4.7e-10); that turn was taken for the bead turning back inside
+// the contact, a stick with contact time T_f + e/g. Truth: the closed form.
+TEST(adaptive_impact, a_turn_below_the_wall_is_no_stick) {
+  const auto law = viscor::law_by_name("linear");
+  const viscor::quad gamma("0.18491112993695216"), g("0.7216704333194961");
+  viscor::solve_options<viscor::quad> options;
+  options.method = viscor::integration_method::adaptive;
+  const auto r = viscor::solve_impact(law, gamma, g, options);
+  const auto exact = viscor::exact_linear(gamma, g);
+  ASSERT_EQ(r.outcome, viscor::impact_outcome::rebound);
+  ASSERT_EQ(exact.outcome, viscor::impact_outcome::rebound);
+  EXPECT_LT(abs(r.e - exact.e), 1e-25 * exact.e) << r.e << " vs " << exact.e;
+}
+#endif

@@ -404,9 +404,14 @@ class adaptive_impact_solver {
         at = start;
         continue;
       }
-      accumulate_error(m_t_int);
       W turned_back_at = 0;
       const turn_scan scan = scan_turning_points(start, at.z, compression, turned_back_at);
+      if (scan == turn_scan::passed_zero_overlap) {  // as above: retry shorter
+        h = (at.tau - start.tau) / 4;
+        at = start;
+        continue;
+      }
+      accumulate_error(m_t_int);
       if (scan == turn_scan::turned_back) {
         out.outcome = tau_outcome::turns_back, out.contact_time = turned_back_at;
         break;
@@ -488,8 +493,9 @@ class adaptive_impact_solver {
 
   // Sign changes of v on the last tau step's nodes (the last replaced by the
   // accurate end state): maximal compression (+ to -) updates `compression`;
-  // turning back (- to +) after it returns turned_back with its time in `turned_back_at`.
-  enum class turn_scan { none, turned_back, not_located };
+  // turning back (- to +) after it returns turned_back with its time in `turned_back_at`;
+  // a sign change located at u <= 0 returns passed_zero_overlap (the step is too long).
+  enum class turn_scan { none, turned_back, not_located, passed_zero_overlap };
   turn_scan scan_turning_points(const tau_point<W>& start, const impact_state<W>& end,
                                 compression_record<W>& compression, W& turned_back_at) {
     const auto& nodes = m_t_int.nodes();
@@ -517,6 +523,9 @@ class adaptive_impact_solver {
         // A turn back is also where u'' = g - u^alpha > 0 at v = 0 (u below u*): a
         // root found above u* is maximal compression again (same step) or noise.
         const located_turn turn = locate_turn(start, m);
+        // A turn at u <= 0 is no turn back: the step went through u = 0 (the bead
+        // left with a tiny e) and on along the continued motion below the wall.
+        if (!(turn.overlap > 0)) return turn_scan::passed_zero_overlap;
         if (turn.confirmed && turn.time > compression.time && turn.net_load > turn.noise) {
           turned_back_at = turn.time;
           return turn_scan::turned_back;
