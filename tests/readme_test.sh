@@ -4,7 +4,8 @@
 # `./build/viscor` too; commands run in a scratch directory that sees the repository's
 # docs/, tools/ and reference_data/. The two set-up commands are checked, not run
 # (they install and build): the test command must be .ci/run's line exactly, the
-# main-job command must build only viscor_cli, and what it runs after the build is run.
+# main-job command must install with --cli and build only viscor_cli, and what it runs
+# after the build is run.
 # The README's ```cpp block must be examples/certified_cor.cpp verbatim.
 # Usage: readme_test.sh SOURCE_DIR BUILD_DIR
 set -uo pipefail
@@ -31,14 +32,16 @@ while IFS= read -r command; do
   [ -z "$command" ] && continue
   commands=$((commands + 1))
   if [[ $command == "bash tools/install-deps.sh"* ]]; then
-    [[ $command == "$setup_prefix"* ]] || fail "set-up command not of the form '$setup_prefix ...': $command"
+    [[ $command == "${setup_prefix/install-deps.sh/install-deps.sh --cli}"* || $command == "$setup_prefix"* ]] ||
+      fail "set-up command not of the form '$setup_prefix ...': $command"
     tail=${command##*&& }
     if [[ $tail == ctest* ]]; then
       [ "$command" = "$ci_line" ] || fail "the test command differs from .ci/run:
   README: $command
   .ci/run: $ci_line"
     else
-      [[ $command == "$setup_prefix --target viscor_cli &&"* ]] || fail "the main-job command must build only viscor_cli: $command"
+      main_prefix='bash tools/install-deps.sh --cli && cmake -S . -B build && cmake --build build -j2 --target viscor_cli &&'
+      [[ $command == "$main_prefix"* ]] || fail "the main-job command must install with --cli and build only viscor_cli: $command"
       command=$tail
     fi
     [[ $tail == ctest* ]] && continue

@@ -4,6 +4,15 @@
 # Run as root (or with sudo available) on a fresh Debian 12 machine.
 set -euo pipefail
 
+# --cli: only what configuring and building the command-line tool needs (the README's
+# main-job command); the DEM programs, Python and documentation packages are large
+# and only the test suite uses them. Without it: everything (.ci/run).
+cli_packages=(
+  build-essential cmake pkg-config git python3
+  libboost1.81-dev libmpfr-dev libgmp-dev libcli11-dev nlohmann-json3-dev libflint-arb-dev
+  libgtest-dev googletest   # the default configure also sets up the tests (not built by the main job)
+)
+
 packages=(
   build-essential cmake pkg-config git
   libboost1.81-dev          # Boost.Math tanh-sinh/roots (1.74 is broken for mpfr; see README)
@@ -20,6 +29,12 @@ packages=(
   python3-numpy python3-mpmath  # its vectorised evaluate and tests; Result.mpf
   yade                      # DEM program run by tests/yade_drop_*test.cpp (issue 15, YADE 2023.02a)
 )
+
+case "${1:-}" in
+  --cli) packages=("${cli_packages[@]}") ;;
+  "") ;;
+  *) echo "install-deps: unknown option '$1' (use --cli, or nothing for everything)" >&2; exit 2 ;;
+esac
 
 missing=()
 for p in "${packages[@]}"; do
