@@ -9,7 +9,7 @@
    at tol in double on all cores, optionally with a surrogate.
 
   PYTHONPATH=build/python python3 benchmarks/python_bench.py [--calls 200] [--points 1000000] [--tol 1e-4]
-      [--law kuwabara_kono] [--threads 0] [--surrogate committed|FILE]
+      [--law kuwabara_kono] [--threads 0] [--surrogate default|none|committed|FILE]
 """
 import argparse
 import os
@@ -53,8 +53,9 @@ def main():
     parser.add_argument("--points", type=int, default=1000000)
     parser.add_argument("--tol", type=float, default=1e-4)
     parser.add_argument("--threads", type=int, default=0)
-    parser.add_argument("--surrogate", default=None,
-                        help="evaluate with a surrogate: 'committed' (the law's, reference_data/surrogates/) or a file")
+    parser.add_argument("--surrogate", default="default",
+                        help="'default' (evaluate's default: the law's committed surrogate where there is one), "
+                             "'none', 'committed' (the law's, an error without one) or a file")
     a = parser.parse_args()
     print(f"machine: {os.cpu_count()} cores, load average {os.getloadavg()[0]:.1f}")
     if a.calls:
@@ -63,7 +64,7 @@ def main():
               f"{wall * 1e3:.3f} ms, median solve {solve * 1e3:.3f} ms, ratio {wall / solve:.3f} "
               f"(minima {wall_min * 1e3:.3f} / {solve_min * 1e3:.3f} ms)")
     if a.points:
-        surrogate = True if a.surrogate == "committed" else a.surrogate
+        surrogate = {"committed": True, "none": None}.get(a.surrogate, a.surrogate)
         seconds, used, worst = bench_evaluate(a.points, a.tol, a.law, a.threads, surrogate)
         print(f"evaluate {a.law}, {a.points} points (gamma 1e-3..0.1, g 0..1) at tol {a.tol:g}, threads "
               f"{a.threads or os.cpu_count()}: {seconds:.3f} s ({a.points / seconds:.3g} points/s); "
