@@ -303,7 +303,8 @@ py::tuple evaluate(const evaluate_request& q, py::array_t<double, py::array::c_s
         for (py::ssize_t i = first; i < last; ++i) {
           try {
             std::optional<evaluation<double>> r;
-            if (q.surrogate && std::isfinite(pg[i]) && std::isfinite(pgg[i]) && pg[i] >= 0 && pgg[i] >= 0)
+            // Its domain (g < 0 included) is checked inside; bad points go to evaluate_one, which names them.
+            if (q.surrogate && std::isfinite(pg[i]) && std::isfinite(pgg[i]) && pg[i] >= 0)
               r = by_surrogate(*q.surrogate, pg[i], pgg[i], pt[i], q.relative);
             const bool from_surrogate = r.has_value();
             if (!r) r = evaluate_one(pg[i], pgg[i], pt[i]);
