@@ -128,3 +128,20 @@ TEST(CliDem, BadInputExitsTwoNamingTheValue) {
 }
 
 }  // namespace
+
+namespace {
+// The clamped (YADE) solve at run-time MPFR precision: its GBS column count came from
+// numeric_limits<Real>::digits10, INT_MAX for run-time MPFR, and the overflowed sum
+// exhausted the step budget ("step budget of 200000 exhausted" at --digits 40).
+TEST(CliDem, YadeDeckAtFortyDigitsAgreesWithDouble) {
+  if (!cli_built()) GTEST_SKIP() << "viscor CLI not built";
+  const std::string args = "dem yade --damping mindlin" + steel + " --target-e 0.5 --v0 0.01 --gravity 9.81 --json";
+  const auto r15 = run_cli(args);
+  const auto r40 = run_cli(args + " --digits 40");
+  ASSERT_EQ(r15.status, 0) << r15.err;
+  ASSERT_EQ(r40.status, 0) << r40.err;
+  const double d15 = std::stod(nlohmann::json::parse(r15.out)["deck"]["damping"].get<std::string>());
+  const double d40 = std::stod(nlohmann::json::parse(r40.out)["deck"]["damping"].get<std::string>());
+  EXPECT_NEAR(d40, d15, 1e-12 * d15);  // both calibrate e to 1e-13; the double run carries ~15 digits
+}
+}  // namespace

@@ -229,7 +229,8 @@ clamped_impact_result<Real> solve_clamped_impact(const contact_law& law, const R
                                                  const clamped_options<Real>& options = {}) {
   using work = typename detail::gbs_work<Real>::type;
   const Real rtol = options.tolerance > 0 ? options.tolerance : epsilon<Real>();
-  const int columns = detail::gbs_max_columns(std::numeric_limits<Real>::digits10 + detail::gbs_work<Real>::guard_digits(),
+  // decimal_digits, not numeric_limits::digits10 (INT_MAX for run-time MPFR: the sum overflowed).
+  const int columns = detail::gbs_max_columns(decimal_digits<Real>() + detail::gbs_work<Real>::guard_digits(),
                                               detail::gbs_work<Real>::guard_digits());
   const clamped_impact_result<work> w =
       detail::solve_clamped_impact_in<work>(law, work(gamma), work(g), work(rtol), options.max_steps, columns);
