@@ -27,7 +27,7 @@ struct dem_command {
   output_options output;
   std::string code, damping, contact = "wall";
   std::string youngs_modulus, poisson_ratio, radius, density;
-  std::string target_e, deck_damping, v0, gravity, force = "0";
+  std::string target_e, deck_damping, deck_en, v0, gravity, force = "0";
   std::string speeds = "0.001,0.01,0.1,1,10";
   int digits = 15;
 
@@ -45,9 +45,15 @@ struct dem_command {
     require(radius, "--radius", "m");
     require(density, "--density", "kg/m^3");
     require(gravity, "--gravity", "m/s^2 towards the wall; 0 for none");
-    const bool reverse = !deck_damping.empty();
+    if (!deck_damping.empty() && !deck_en.empty())
+      throw invalid_parameter("give either --deck-damping (the deck's betan) or --deck-en (YADE's en), not both");
+    if (!deck_en.empty() && model.damping != dem::damping_model::mindlin)
+      throw invalid_parameter("--deck-en " + deck_en + " is YADE's `en` input of Hertz-Mindlin (yade --damping "
+                              "mindlin), not an input of " + code + " " + damping);
+    const bool reverse = !deck_damping.empty() || !deck_en.empty();
     if (reverse && !target_e.empty())
-      throw invalid_parameter("give either --target-e (deck for a measured e) or --deck-damping (e for a deck), not both");
+      throw invalid_parameter("give either --target-e (deck for a measured e) or --deck-damping/--deck-en (e for a "
+                              "deck), not both");
     if (!reverse) {
       require(target_e, "--target-e", "the measured coefficient of restitution, 0 < e < 1");
       require(v0, "--v0", "impact speed, m/s");
@@ -152,7 +158,17 @@ struct dem_command {
 
   template <class Real>
   void run_reverse(const dem::dem_model& model, dem::dem_impact<Real>& impact, json& j, std::ostringstream& text) const {
-    const Real deck_value = parse_real<Real>(deck_damping, "deck_damping");
+    Real deck_value;
+    if (!deck_en.empty()) {  // YADE's own conversion: `en` becomes betan by Thornton's fit
+      const Real en = parse_real<Real>(deck_en, "deck_en");
+      if (!(en > 0 && en <= 1))
+        throw invalid_parameter("parameter deck_en must be in (0, 1], got " + to_decimal_string(en));
+      deck_value = dem::yade_thornton_betan(en);
+      j["deck_en"] = deck_en;
+      j["builtin_conversion"] = "Ip2_FrictMat_FrictMat_MindlinPhys(en=deck_en): betan by Thornton et al. (2013)";
+    } else {
+      deck_value = parse_real<Real>(deck_damping, "deck_damping");
+    }
     dem::validate_deck_damping(model, deck_value);
     std::vector<std::string> speed_list = split_list(speeds);
     if (!v0.empty()) speed_list.insert(speed_list.begin(), v0);
@@ -160,10 +176,12 @@ struct dem_command {
     struct load { std::string gravity, force; };
     std::vector<load> loads{{"0", "0"}};
     if (impact.gravity != 0 || impact.force != 0) loads.push_back({gravity, force});
-    j["deck_damping"] = deck_damping;
+    j["deck_damping"] = deck_en.empty() ? deck_damping : to_decimal_string(deck_value);
     j["damping_number"] = number(dem::damping_number(model, deck_value));
     json rows = json::array();
-    text << "deck        damping = " << deck_damping << " (the deck modulus as viscor dem writes it)\n"
+    if (!deck_en.empty()) text << "deck        en = " << deck_en << " (YADE's own conversion)\n";
+    text << "deck        damping = " << (deck_en.empty() ? deck_damping : to_decimal_string(deck_value))
+         << " (the deck modulus as viscor dem writes it)\n"
          << "v0 (m/s)    gravity (m/s^2)  force (N)  e\n";
     for (const std::string& speed : speed_list) {
       for (const load& l : loads) {
@@ -201,6 +219,8 @@ void setup(CLI::App& app) {
   app.add_option("--density", cmd->density, "bead density, kg/m^3");
   app.add_option("--target-e", cmd->target_e, "measured coefficient of restitution to reproduce, 0 < e < 1");
   app.add_option("--deck-damping", cmd->deck_damping, "reverse: the deck's damping entry; prints the e it gives");
+  app.add_option("--deck-en", cmd->deck_en,
+                 "reverse, yade mindlin: YADE's own input en (turned into betan by Thornton's fit); prints the e it gives");
   app.add_option("--v0", cmd->v0, "impact (approach) speed, m/s");
   app.add_option("--gravity", cmd->gravity, "gravitational acceleration towards the wall, m/s^2 (required; 0 for none)");
   app.add_option("--force", cmd->force, "constant force pressing the bead on the wall (or the pair together), N")
