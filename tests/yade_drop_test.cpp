@@ -96,3 +96,55 @@ TEST(YadeDrop, BuiltinConversionTableRows) {
 }
 
 }  // namespace
+
+namespace {
+
+// YADE's visco-elastic law (a linear spring of the user's stiffness, force clamped at
+// 0) with the deck of `viscor dem yade --damping viscoelastic --k ...`: two beads,
+// v0 in {0.01, 1} m/s, gravity 0 and 9.81 m/s^2, dt = T/400 and T/800 (T = sqrt(m/k));
+// and YADE's own conversion (ViscElMat(tc, en = target), tc giving kn = k) against the
+// builtin_e viscor predicts for it. One yade run.
+TEST(YadeDrop, ViscoelasticReproducesTarget) {
+  const auto yade = find_yade();
+  if (!yade) GTEST_SKIP() << "yade is not installed (tools/install-deps.sh installs it)";
+  std::vector<drop_case> cases;
+  for (const auto& m : viscel_materials())
+    for (double v0 : {0.01, 1.0})
+      for (double gravity : {0.0, 9.81})
+        for (int per_T : {400, 800}) cases.push_back(viscel_drop(m, v0, gravity, per_T));
+  const std::size_t deck_cases = cases.size();
+  const dem_model& model = find_dem_model("yade", "viscoelastic");
+  for (const auto& m : viscel_materials())
+    for (int per_T : {400, 800}) {
+      drop_case c = viscel_drop(m, 0.01, 9.81, per_T);
+      dem_impact<double> impact;
+      impact.bead = m.bead, impact.v0 = 0.01, impact.gravity = 9.81, impact.stiffness = m.stiffness;
+      const dem_deck<double> d = dem_deck_for(model, impact, m.target_e);
+      c.name = "en = target, tc = " + viscor::to_decimal_string(*d.builtin_tc, 6) + " s: " + c.name;
+      c.kn = c.cn = c.wall_kn = c.wall_cn = "";
+      c.tc = viscor::to_decimal_string(*d.builtin_tc), c.en = dem_drop::format_double(m.target_e);
+      c.expected_e = *d.builtin_e;
+      cases.push_back(c);
+    }
+  std::string message;
+  ASSERT_TRUE(run_drops(*yade, cases, message)) << message;
+  for (std::size_t i = 0; i < cases.size(); i += 2) {
+    const drop_case& coarse = cases[i];
+    const drop_case& fine = cases[i + 1];
+    SCOPED_TRACE(coarse.name);
+    ASSERT_TRUE(coarse.ok && fine.ok);
+    EXPECT_TRUE(coarse.force_free && fine.force_free);  // the clamp released the bead before zero overlap
+    const double miss = coarse.e - coarse.expected_e, fine_miss = fine.e - fine.expected_e;
+    EXPECT_LE(std::abs(miss), yade_viscel_tolerance_at_T_over_400) << "e = " << coarse.e;
+    // first order: halving dt halves the miss, and the extrapolation 2 e(dt/2) - e(dt) removes it
+    EXPECT_NEAR(miss / fine_miss, 2.0, 0.1) << "halving dt: e = " << fine.e;
+    const double extrapolated = 2 * fine.e - coarse.e;
+    EXPECT_NEAR(extrapolated, coarse.expected_e, yade_viscel_extrapolated_tolerance);
+    std::printf("[yade] %s: expected %.8f, e = %.10f (miss %.2e), at dt/2 e = %.10f (miss %.2e), "
+                "extrapolated miss %.1e\n", coarse.name.c_str(), coarse.expected_e, coarse.e, miss, fine.e, fine_miss,
+                extrapolated - coarse.expected_e);
+    if (i + 2 == deck_cases) std::printf("[yade] YADE's own conversion:\n");
+  }
+}
+
+}  // namespace
