@@ -86,18 +86,22 @@ inline const std::array<viscel_case, 2>& viscel_materials() {
   return m;
 }
 
-/// A visco-elastic drop of m at v0 under gravity with viscor's deck for m.target_e, at dt = T/per_T.
-inline drop_case viscel_drop(const viscel_case& m, double v0, double gravity, int per_T) {
+/// A visco-elastic drop of m at v0 under gravity with viscor's deck for m.target_e, at dt = T/per_T
+/// (a pair: two beads of the deck's material head-on, pressed together by `force` each).
+inline drop_case viscel_drop(const viscel_case& m, double v0, double gravity, int per_T,
+                             contact_kind kind = contact_kind::wall, double force = 0) {
   const dem_model& model = find_dem_model("yade", "viscoelastic");
   dem_impact<double> impact;
   impact.bead = m.bead, impact.v0 = v0, impact.gravity = gravity, impact.stiffness = m.stiffness;
+  impact.kind = kind, impact.force = force;
   const dem_deck<double> d = dem_deck_for(model, impact, m.target_e);
   drop_case c;
   char name[160];
-  std::snprintf(name, sizeof name, "viscoelastic %s wall v0 = %g m/s gravity = %g m/s^2 dt = T/%d", m.name, v0,
-                gravity, per_T);
+  std::snprintf(name, sizeof name, "viscoelastic %s %s v0 = %g m/s gravity = %g m/s^2 force = %g N dt = T/%d",
+                m.name, kind == contact_kind::pair ? "pair" : "wall", v0, gravity, force, per_T);
   c.name = name;
   c.viscel = true;
+  c.pair = kind == contact_kind::pair, c.force = force;
   c.kn = to_decimal_string(*d.stiffness), c.cn = to_decimal_string(d.damping);
   c.wall_kn = c.wall_cn = yade_rigid_wall_viscel;
   c.radius = m.bead.radius, c.density = m.bead.density, c.v0 = v0, c.gravity = gravity;
