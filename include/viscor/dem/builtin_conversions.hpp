@@ -77,6 +77,7 @@ struct yade_viscel_contact {
   Real cn = 0;  ///< N s/m
 };
 
+/// The contact's kn, cn YADE derives from tc, en and the reduced mass m_R (above).
 template <class Real>
 yade_viscel_contact<Real> yade_viscel_from_tc_en(const Real& tc, const Real& en, const Real& reduced_mass) {
   using std::log;
