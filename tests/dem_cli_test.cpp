@@ -82,6 +82,56 @@ TEST(CliDem, YadeMindlin) {
   EXPECT_GT(std::stod(table[0]["e"].get<std::string>()), 0.7);            // without load the bead rebounds more
 }
 
+// YADE's own conversion in the reverse table: --deck-en E is betan = Thornton's fit of E.
+TEST(CliDem, YadeDeckEnIsThorntonsBetan) {
+  if (!cli_built()) GTEST_SKIP() << "viscor CLI not built";
+  const auto r = run_cli("dem yade --damping mindlin" + steel + " --deck-en 0.5 --gravity 9.81 --speeds 0.01 --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["deck_en"], "0.5");
+  EXPECT_NEAR(std::stod(j["deck_damping"].get<std::string>()), 0.2330248576834424, 2e-16);  // printed by yade
+  viscor::dem::dem_impact<double> impact;
+  impact.bead = {2e11, 0.3, 1e-3, 7800}, impact.v0 = 0.01, impact.gravity = 9.81;
+  const auto& m = viscor::dem::find_dem_model("yade", "mindlin");
+  EXPECT_NEAR(std::stod(j["table"][1]["e"].get<std::string>()), *viscor::dem::dem_deck_for(m, impact, 0.5).builtin_e,
+              1e-12);
+}
+
+// YADE visco-elastic: a linear spring of stiffness --k; the deck is the bead material's
+// kn and cn (the wall's 1e30: rigid), cn reproduces the target through the clamped linear
+// law, builtin_e is YADE's own ViscElMat(tc, en), and the reverse table takes cn.
+TEST(CliDem, YadeViscoelastic) {
+  if (!cli_built()) GTEST_SKIP() << "viscor CLI not built";
+  const std::string bead = " --k 1e4 --radius 1e-3 --density 1200";
+  const auto r = run_cli("dem yade --damping viscoelastic" + bead + " --target-e 0.5 --v0 0.01 --gravity 9.81 --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(j["clamped"].get<bool>());
+  EXPECT_EQ(j["law"]["name"], "linear");
+  EXPECT_EQ(std::stod(j["deck"]["kn"].get<std::string>()), 1e4) << j["deck"];
+  EXPECT_EQ(j["deck"]["wall_kn"], "1e30");
+  EXPECT_EQ(j["deck"]["wall_cn"], "1e30");
+  EXPECT_EQ(j["deck"]["cn"], j["deck"]["damping"]);
+  const auto& m = viscor::dem::find_dem_model("yade", "viscoelastic");
+  viscor::dem::dem_impact<double> impact;
+  impact.bead.radius = 1e-3, impact.bead.density = 1200, impact.v0 = 0.01, impact.gravity = 9.81;
+  impact.stiffness = 1e4;
+  const double cn = std::stod(j["deck"]["cn"].get<std::string>());
+  EXPECT_NEAR(viscor::dem::e_for_deck(m, impact, cn).e, 0.5, 1e-10);
+  EXPECT_TRUE(j.contains("builtin_e") && j.contains("builtin_tc_s"));
+  const std::string snippet = j["snippet"];
+  for (const std::string& text : {"ViscElMat(kn=" + j["deck"]["kn"].get<std::string>() + ", cn=" + j["deck"]["cn"].get<std::string>(),
+                                  std::string("ViscElMat(kn=1e30, cn=1e30"), std::string("density=1200"),
+                                  std::string("Law2_ScGeom_ViscElPhys_Basic()")})
+    EXPECT_NE(snippet.find(text), std::string::npos) << text << " in\n" << snippet;
+  const auto rev = run_cli("dem yade --damping viscoelastic" + bead + " --deck-damping " + j["deck"]["cn"].get<std::string>() +
+                           " --gravity 9.81 --speeds 0.01 --json");
+  ASSERT_EQ(rev.status, 0) << rev.err;
+  const auto table = nlohmann::json::parse(rev.out)["table"];
+  ASSERT_EQ(table.size(), 2u);
+  EXPECT_NEAR(std::stod(table[1]["e"].get<std::string>()), 0.5, 1e-10);
+}
+
 TEST(CliDem, ReverseTableListsSpeedsAndLoads) {
   if (!cli_built()) GTEST_SKIP() << "viscor CLI not built";
   const auto r = run_cli("dem lammps --damping tsuji" + steel + " --deck-damping 0.8 --gravity 9.81 --speeds 0.01,1 --json");
@@ -110,7 +160,14 @@ TEST(CliDem, BadInputExitsTwoNamingTheValue) {
                        bad{"dem lammps --damping tsuji --target-e 0.5 --contact floor" + tail, "'floor'"},
                        bad{"dem lammps --damping tsuji --target-e 0.5" + steel + " --v0 1", "--gravity"},
                        bad{"dem liggghts --damping hertz --deck-damping 1.5" + tail, "1.5"},
-                       bad{"dem yade --damping viscoelastic --target-e 0.5" + tail, "'viscoelastic'"},
+                       bad{"dem yade --damping viscoelastic --target-e 0.5 --radius 1e-3 --density 7800 --v0 1 --gravity 9.81",
+                           "--k"},
+                       bad{"dem yade --damping viscoelastic --k 1e4 --target-e 0.5" + tail, "--youngs-modulus"},
+                       bad{"dem yade --damping viscoelastic --k -5 --target-e 0.5 --radius 1e-3 --density 7800 --v0 1 "
+                           "--gravity 9.81", "parameter k"},
+                       bad{"dem lammps --damping tsuji --k 1e4 --target-e 0.5" + tail, "--k"},
+                       bad{"dem lammps --damping tsuji --deck-en 0.5" + tail, "--deck-en"},
+                       bad{"dem yade --damping mindlin --deck-en 1.5" + tail, "deck_en"},
                        bad{"dem yade --damping mindlin --target-e 1" + tail, "target_e"},
                        bad{"dem yade --damping mindlin --deck-damping -0.1" + tail, "deck damping"},
                        // needs less damping than the tsuji polynomial gives at e = 1 (0.0003)

@@ -4,6 +4,7 @@
 // errors naming the bad value.
 #include <viscor/dem/dem_calibration.hpp>
 #include <viscor/dem/deck_snippet.hpp>
+#include <viscor/exact/exact_linear_clamped.hpp>
 #include <viscor/exact/exact_tsuji.hpp>
 
 #include "dem_static_force_data.hpp"
@@ -53,13 +54,18 @@ TEST(DemConventions, ForcesMatchYade) {
     if (std::string(c.law) == "mindlin") {
       const double betan = c.deck_is_en ? yade_thornton_betan(c.deck_damping) : c.deck_damping;
       f = code_normal_force(model, bead, kind, 1e8, betan, delta, c.overlap_rate, 1e30, 0.3);
-    } else {
-      f = std::max(0.0, 1e4 / 2 * delta + c.deck_damping / 2 * c.overlap_rate);
+    } else if (std::string(c.law) == "viscel") {  // a wall of the bead's material: half of each
+      f = yade_viscel_normal_force(kind, 1e4, c.deck_damping, 1e4, c.deck_damping, delta, c.overlap_rate);
+    } else if (std::string(c.law) == "viscel_rigid") {
+      f = yade_viscel_normal_force(kind, 1e4, c.deck_damping, 1e30, 1e30, delta, c.overlap_rate);
+    } else {  // tc, en on both bodies: YADE's contact kn, cn with the reduced mass m/2 (also on the wall)
+      const auto kc = yade_viscel_from_tc_en(1e-5, c.deck_damping, bead.mass() / 2);
+      f = kc.kn * delta + kc.cn * c.overlap_rate;
     }
     clamped += c.force == 0;
     EXPECT_NEAR(f, c.force, 4e-15 * c.force);
   }
-  EXPECT_EQ(clamped, 2);  // the clamp is exercised for both laws
+  EXPECT_EQ(clamped, 3);  // the clamp is exercised for both laws
   // Thornton's fit as YADE computed it (Ip2_FrictMat_FrictMat_MindlinPhys(en=0.5).betan, printed by yade).
   EXPECT_NEAR(yade_thornton_betan(0.5), 0.2330248576834424, 2e-16);
   EXPECT_NEAR(yade_thornton_betan(0.8), 0.06790289004602458, 2e-16);
@@ -89,15 +95,18 @@ TEST(DemConventions, DeckGivesThePhysicalForce) {
                    std::string(to_string(kind)));
       dem_impact<double> impact;
       impact.bead = bead, impact.kind = kind, impact.v0 = 0.3, impact.gravity = 9.81;
+      impact.stiffness = 1e5;  // N/m, YADE visco-elastic only
       const dem_deck<double> d = dem_deck_for(model, impact, 0.6);
       const double wall_modulus = d.wall_youngs_modulus.value_or(0.0);
-      const double beta = law_of(model).beta.value<double>();
+      const double alpha = law_of(model).alpha.value<double>(), beta = law_of(model).beta.value<double>();
       for (double delta : {1e-7, 3e-6})
         for (double rate : {-0.2, 0.05}) {
-          const double f = code_normal_force(model, bead, kind, d.youngs_modulus, d.damping, delta, rate,
-                                             wall_modulus, bead.poisson_ratio);
+          const double f = takes_linear_stiffness(model)
+                               ? yade_viscel_normal_force(kind, *d.stiffness, d.damping, 1e30, 1e30, delta, rate)
+                               : code_normal_force(model, bead, kind, d.youngs_modulus, d.damping, delta, rate,
+                                                   wall_modulus, bead.poisson_ratio);
           const double k = d.contact.stiffness;
-          double physical = k * std::pow(delta, 1.5) + d.gamma0 * k * beta * std::pow(delta, beta - 1) * rate;
+          double physical = k * std::pow(delta, alpha) + d.gamma0 * k * beta * std::pow(delta, beta - 1) * rate;
           if (model.clamped) physical = std::max(physical, 0.0);
           EXPECT_NEAR(f, physical, 1e-12 * std::abs(physical));
         }
@@ -122,6 +131,7 @@ TYPED_TEST(DemRoundTrip, DeckReproducesTarget) {
         impact.bead = bead, impact.kind = kind, impact.v0 = Real(1) / 100;
         impact.gravity = parse_real<Real>(gravity, "gravity");
         impact.force = kind == contact_kind::pair ? Real(1) / 10000 : Real(0);
+        impact.stiffness = Real(10000);  // N/m, YADE visco-elastic only
         const Real target = Real(7) / 10;
         const dem_deck<Real> d = dem_deck_for(model, impact, target);
         // the deck as printed (round-trip decimal), read back as the code would
@@ -178,6 +188,28 @@ TEST(DemBuiltin, LammpsTsujiMissesWithoutLoad) {
   EXPECT_NEAR(*d.builtin_e, 0.8534, 1e-4);
 }
 
+// YADE's visco-elastic law is the clamped linear impact, whose e has a closed form
+// (exact/exact_linear_clamped.hpp). Without load: viscor's deck gives the target, and
+// YADE's own ViscElMat(tc, en) takes its damping from the reduced mass m/2, so the
+// scaled damping is 2 b(en) / sqrt(2) on a wall (the bead's mass m moves) and 2 b(en)
+// for a pair (where m/2 is right; only the clamp then moves e above en).
+TEST(DemBuiltin, YadeViscoelasticWithoutLoad) {
+  const dem_model& model = find_dem_model("yade", "viscoelastic");
+  dem_impact<double> impact;
+  impact.bead = {3e9, 0.35, 1e-3, 1200}, impact.v0 = 1, impact.stiffness = 1e4;
+  for (contact_kind kind : {contact_kind::wall, contact_kind::pair})
+    for (double e : {0.1, 0.5, 0.9}) {
+      SCOPED_TRACE(std::string(to_string(kind)) + " e = " + std::to_string(e));
+      impact.kind = kind;
+      const dem_deck<double> d = dem_deck_for(model, impact, e);
+      EXPECT_NEAR(exact_linear_clamped(d.calibration.scaled.gamma, 0.0).e, e, 1e-12);
+      const double b = liggghts_damping_ratio(e);
+      const double gamma_builtin = kind == contact_kind::wall ? std::sqrt(2.0) * b : 2 * b;
+      EXPECT_NEAR(*d.builtin_e, exact_linear_clamped(gamma_builtin, 0.0).e, 1e-12);
+      EXPECT_GT(*d.builtin_e, e);  // less damping (wall) and the clamp: YADE's en gives more than en
+    }
+}
+
 TEST(DemErrors, NamesTheValue) {
   auto message = [](auto&& f) {
     try {
@@ -191,7 +223,6 @@ TEST(DemErrors, NamesTheValue) {
   EXPECT_NE(message([] { find_dem_model("lammps", "bar"); }).find("'bar'"), std::string::npos);
   EXPECT_NE(message([] { find_dem_model("lammps", "coeff_restitution"); }).find("not in the installed"),
             std::string::npos);
-  EXPECT_NE(message([] { find_dem_model("yade", "viscoelastic"); }).find("'viscoelastic'"), std::string::npos);
   EXPECT_NE(message([] { find_dem_model("yade", "tsuji"); }).find("'tsuji'"), std::string::npos);
   EXPECT_NE(message([] { parse_contact_kind("floor"); }).find("'floor'"), std::string::npos);
   dem_impact<double> impact;

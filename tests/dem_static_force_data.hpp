@@ -56,15 +56,17 @@ namespace viscor::test {
 // same bead, overlap and positions as above; overlap rate > 0 approaching, and
 // -0.5 m/s separating, where elastic + viscous force pulls and YADE prints 0.
 struct yade_static_force_case {
-  const char* law;      ///< "mindlin" (betan given, or en: Thornton's betan) or "viscel" (kn, cn per material)
-  const char* contact;  ///< wall (utils.wall of a material with young 1e30; viscel: the bead's material) or pair
+  const char* law;      ///< "mindlin" (betan given, or en: Thornton's betan), "viscel" (kn, cn per material; wall
+                        ///< of the bead's material), "viscel_rigid" (wall material kn = cn = 1e30) or
+                        ///< "viscel_tc_en" (ViscElMat(tc = 1e-5 s, en, et = en) on both bodies)
+  const char* contact;  ///< wall (utils.wall of a material with young 1e30, or as above) or pair
   double deck_damping;  ///< betan, en, or the per-material cn (N s/m; kn = 1e4 N/m)
   bool deck_is_en;      ///< mindlin with `en` instead of betan
   double overlap_rate;  ///< m/s
   double force;         ///< printed normal force, N
 };
 
-inline constexpr std::array<yade_static_force_case, 7> yade_static_forces{{
+inline constexpr std::array<yade_static_force_case, 12> yade_static_forces{{
     {"mindlin", "wall", 0.3, false, 0.05, 0.017360126483443698},
     {"mindlin", "wall", 0.3, false, -0.05, 0.0011733689607672567},
     {"mindlin", "wall", 0.3, false, -0.5, 0},
@@ -72,6 +74,11 @@ inline constexpr std::array<yade_static_force_case, 7> yade_static_forces{{
     {"mindlin", "wall", 0.5, true, 0.05, 0.015553275835568923},
     {"viscel", "wall", 0.2, false, 0.05, 0.015000000000000244},
     {"viscel", "wall", 0.2, false, -0.5, 0},
+    {"viscel_rigid", "wall", 0.2, false, 0.05, 0.030000000000000488},
+    {"viscel_rigid", "wall", 0.2, false, -0.5, 0},
+    {"viscel_rigid", "pair", 0.2, false, 0.1, 0.019999999999999161},
+    {"viscel_tc_en", "wall", 0.5, true, 0.05, 1.1201485794790966},
+    {"viscel_tc_en", "pair", 0.5, true, 0.1, 1.156441680984039},
 }};
 
 }  // namespace viscor::test

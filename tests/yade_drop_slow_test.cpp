@@ -2,6 +2,7 @@
 // m/s, gravity 0 and 9.81 m/s^2, dt = T/200, T/400, T/800, with the deck of
 // `viscor dem yade --damping mindlin`; and YADE's own `en` conversion (Thornton's
 // fit) against the builtin_e viscor predicts for it. One yade run for all drops.
+// And the visco-elastic law for head-on pairs (the deck's 2 kn, 2 cn per material).
 #include "yade_drop_utils.hpp"
 
 #include <cmath>
@@ -76,6 +77,29 @@ TEST(YadeDropSweep, BuiltinConversion) {
     ASSERT_TRUE(c.ok);
     EXPECT_NEAR(c.e, c.expected_e, yade_tolerance_at_T_over_400 / 2);
     std::printf("[yade] en: %s: e = %.6f, builtin_e = %.6f\n", c.name.c_str(), c.e, c.expected_e);
+  }
+}
+
+// YADE visco-elastic, two beads head-on (contact kn, cn = half the material's), free and
+// pressed together by 1e-4 N each, at dt = T/400 and T/800: first-order misses as on the wall.
+TEST(YadeDropSweep, ViscoelasticPairReproducesTarget) {
+  const auto yade = find_yade();
+  if (!yade) GTEST_SKIP() << "yade is not installed (tools/install-deps.sh installs it)";
+  std::vector<drop_case> cases;
+  for (const auto& m : viscel_materials())
+    for (double force : {0.0, 1e-4})
+      for (int per_T : {400, 800}) cases.push_back(viscel_drop(m, 0.01, 0.0, per_T, contact_kind::pair, force));
+  std::string message;
+  ASSERT_TRUE(run_drops(*yade, cases, message)) << message;
+  for (std::size_t i = 0; i < cases.size(); i += 2) {
+    SCOPED_TRACE(cases[i].name);
+    ASSERT_TRUE(cases[i].ok && cases[i + 1].ok && cases[i].force_free && cases[i + 1].force_free);
+    const double m400 = cases[i].e - cases[i].expected_e, m800 = cases[i + 1].e - cases[i + 1].expected_e;
+    EXPECT_LE(std::abs(m400), yade_viscel_tolerance_at_T_over_400);
+    EXPECT_NEAR(m400 / m800, 2.0, 0.1);
+    EXPECT_NEAR(2 * cases[i + 1].e - cases[i].e, cases[i].expected_e, yade_viscel_extrapolated_tolerance);
+    std::printf("[yade] %s: miss at T/400, T/800: %.2e %.2e, extrapolated %.1e\n", cases[i].name.c_str(), m400, m800,
+                2 * cases[i + 1].e - cases[i].e - cases[i].expected_e);
   }
 }
 

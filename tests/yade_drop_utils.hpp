@@ -27,11 +27,19 @@ using namespace viscor::dem;
 /// The expected agreement at dt = T/400 (measured misses: docs/dem.md, "YADE").
 inline constexpr double yade_tolerance_at_T_over_400 = 1e-4;
 
+/// The visco-elastic law's stepping error is first order and larger (its time scale
+/// T = sqrt(m/k)): |miss| <= 5e-4 at dt = T/400, halving with dt, so that the
+/// extrapolation 2 e(T/800) - e(T/400) meets the target to 2e-6 (docs/dem.md, "YADE").
+inline constexpr double yade_viscel_tolerance_at_T_over_400 = 5e-4;
+inline constexpr double yade_viscel_extrapolated_tolerance = 2e-6;
+
 /// One drop: the deck as viscor dem prints it, the time step and the e expected.
 struct drop_case {
   std::string name;
   std::string young, poisson, betan;  ///< deck strings (betan empty: `en` below)
-  std::string en;                     ///< YADE's own conversion instead of betan
+  std::string en;                     ///< YADE's own conversion instead of betan (viscel: with tc)
+  bool viscel = false;                ///< the visco-elastic law: kn, cn (or tc, en) instead of young, betan
+  std::string kn, cn, wall_kn, wall_cn, tc;  ///< viscel deck strings (tc with en: YADE's own conversion)
   double radius = 0, density = 0, v0 = 0, gravity = 0, dt = 0;
   bool pair = false;  ///< two beads head-on instead of a bead on the wall
   double force = 0;   ///< N pressing the pair together (each bead)
@@ -62,6 +70,46 @@ inline drop_case deck_drop(const dem_drop::material_case& m, double v0, double g
   return c;
 }
 
+/// A visco-elastic bead: the mass of `bead`, the contact stiffness k (N/m) and the target e.
+struct viscel_case {
+  const char* name;
+  bead_material<double> bead;  ///< radius and density (E and nu unused)
+  double stiffness, target_e;
+};
+
+/// Two visco-elastic beads: a stiff steel-like contact and a soft polymer-like one.
+inline const std::array<viscel_case, 2>& viscel_materials() {
+  static const std::array<viscel_case, 2> m{{
+      {"steel k = 1e6 N/m", {2e11, 0.3, 1e-3, 7800}, 1e6, 0.8},
+      {"polymer k = 1e4 N/m", {3e9, 0.35, 1e-3, 1200}, 1e4, 0.5},
+  }};
+  return m;
+}
+
+/// A visco-elastic drop of m at v0 under gravity with viscor's deck for m.target_e, at dt = T/per_T
+/// (a pair: two beads of the deck's material head-on, pressed together by `force` each).
+inline drop_case viscel_drop(const viscel_case& m, double v0, double gravity, int per_T,
+                             contact_kind kind = contact_kind::wall, double force = 0) {
+  const dem_model& model = find_dem_model("yade", "viscoelastic");
+  dem_impact<double> impact;
+  impact.bead = m.bead, impact.v0 = v0, impact.gravity = gravity, impact.stiffness = m.stiffness;
+  impact.kind = kind, impact.force = force;
+  const dem_deck<double> d = dem_deck_for(model, impact, m.target_e);
+  drop_case c;
+  char name[160];
+  std::snprintf(name, sizeof name, "viscoelastic %s %s v0 = %g m/s gravity = %g m/s^2 force = %g N dt = T/%d",
+                m.name, kind == contact_kind::pair ? "pair" : "wall", v0, gravity, force, per_T);
+  c.name = name;
+  c.viscel = true;
+  c.pair = kind == contact_kind::pair, c.force = force;
+  c.kn = to_decimal_string(*d.stiffness), c.cn = to_decimal_string(d.damping);
+  c.wall_kn = c.wall_cn = yade_rigid_wall_viscel;
+  c.radius = m.bead.radius, c.density = m.bead.density, c.v0 = v0, c.gravity = gravity;
+  c.dt = d.calibration.time_scale / per_T, c.max_steps = 30 * per_T;
+  c.expected_e = m.target_e;
+  return c;
+}
+
 inline std::optional<std::string> find_yade() { return dem_drop::find_program("yade"); }
 
 /// Runs all cases in one yade process and fills e, ok, force_free; false (with a message) if yade failed.
@@ -75,8 +123,19 @@ inline bool run_drops(const std::string& yade, std::vector<drop_case>& cases, st
     out << "[";
     for (std::size_t i = 0; i < cases.size(); ++i) {
       const drop_case& c = cases[i];
-      out << (i ? ",\n" : "") << "{\"young\": \"" << c.young << "\", \"poisson\": \"" << c.poisson << "\", "
-          << (c.en.empty() ? "\"betan\": \"" + c.betan : "\"en\": \"" + c.en) << "\", \"density\": \""
+      auto field = [&](const char* key, const std::string& value) {
+        if (!value.empty()) out << "\"" << key << "\": \"" << value << "\", ";
+      };
+      out << (i ? ",\n" : "") << "{";
+      if (c.viscel) {
+        out << "\"law\": \"viscel\", ";
+        field("kn", c.kn), field("cn", c.cn), field("wall_kn", c.wall_kn), field("wall_cn", c.wall_cn);
+        field("tc", c.tc), field("en", c.en);
+      } else {
+        field("young", c.young), field("poisson", c.poisson);
+        field(c.en.empty() ? "betan" : "en", c.en.empty() ? c.betan : c.en);
+      }
+      out << "\"density\": \""
           << dem_drop::format_double(c.density) << "\", \"radius\": \"" << dem_drop::format_double(c.radius)
           << "\", \"v0\": \"" << dem_drop::format_double(c.v0) << "\", \"gravity\": \""
           << dem_drop::format_double(c.gravity) << "\", \"dt\": \"" << dem_drop::format_double(c.dt)

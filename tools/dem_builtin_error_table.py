@@ -2,9 +2,11 @@
 """How far off the DEM codes' own e -> damping conversions are under gravity.
 
 For each code conversion (LAMMPS damping tsuji, LIGGGHTS model hertz with
-coefficientRestitution), bead material (steel, glass, polymer; R = 1 mm, on a
+coefficientRestitution, YADE Hertz-Mindlin with `en`: betan by Thornton's fit,
+force clamped at 0), bead material (steel, glass, polymer; R = 1 mm, on a
 rigid wall, gravity 0 and 9.81 m/s^2) and target e, writes the target e itself into the
-deck and asks `viscor dem ... --deck-damping E --speeds ...` for the e the code
+deck (for YADE as `en`: `--deck-en E`) and asks `viscor dem ... --deck-damping E
+--speeds ...` for the e the code
 then produces (viscor's exact solve of the code's force law, which the drop
 tests check against the real programs). One row per (code, material, e, v0).
 
@@ -27,7 +29,8 @@ MATERIALS = [  # name, E (Pa), nu, radius (m), density (kg/m^3)
     ("glass", "7e10", "0.22", "1e-3", "2500"),
     ("polymer", "3e9", "0.35", "1e-3", "1200"),
 ]
-CONVERSIONS = [("lammps", "tsuji"), ("liggghts", "hertz")]
+CONVERSIONS = [("lammps", "tsuji"), ("liggghts", "hertz"), ("yade", "mindlin")]
+DECK_OPTION = {"yade": "--deck-en"}  # YADE's betan is a coefficient; its own conversion is the input `en`
 TARGETS = ["0.05", "0.1", "0.15", "0.2", "0.25", "0.3", "0.35", "0.4", "0.45", "0.5", "0.55", "0.6", "0.65",
            "0.7", "0.75", "0.8", "0.85", "0.9", "0.95", "0.97", "0.99"]
 SPEEDS = "0.001,0.003,0.01,0.03,0.1,0.3,1,3"
@@ -47,7 +50,7 @@ def main():
         for name, E, nu, R, rho in MATERIALS:
             for target in TARGETS:
                 command = [args.viscor, "dem", code, "--damping", damping, "--youngs-modulus", E, "--poisson-ratio", nu,
-                           "--radius", R, "--density", rho, "--gravity", GRAVITY, "--deck-damping", target,
+                           "--radius", R, "--density", rho, "--gravity", GRAVITY, DECK_OPTION.get(code, "--deck-damping"), target,
                            "--speeds", SPEEDS, "--json"]
                 out = json.loads(subprocess.run(command, check=True, capture_output=True, text=True).stdout)
                 for row in out["table"]:  # each speed without load (gravity 0) and under gravity
@@ -71,7 +74,9 @@ def main():
         "columns": ",".join(COLUMNS),
         "conversions": {c + " " + d: v for (c, d), v in zip(CONVERSIONS, [
             "LAMMPS 29 Sep 2021 update 2, fix wall/gran granular hertz/material ... damping tsuji",
-            "LIGGGHTS-PUBLIC 3.8.0, model hertz with coefficientRestitution"])},
+            "LIGGGHTS-PUBLIC 3.8.0, model hertz with coefficientRestitution",
+            "YADE 2023.02a, Ip2_FrictMat_FrictMat_MindlinPhys(en=target): betan by Thornton et al.'s fit, "
+            "Law2_ScGeom_MindlinPhys_Mindlin (total normal force clamped at 0)"])},
         "materials": [dict(zip(["name", "youngs_modulus", "poisson_ratio", "radius", "density"], m)) for m in MATERIALS],
         "targets": TARGETS,
         "speeds": SPEEDS.split(","),

@@ -19,7 +19,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 COLORS = {"steel": "C0", "glass": "C2", "polymer": "C3"}
 STYLES = {"0.001": "-.", "0.01": "-", "0.1": "--", "1": ":"}
 TITLES = {("lammps", "tsuji"): "LAMMPS 29Sep2021, damping tsuji",
-          ("liggghts", "hertz"): "LIGGGHTS 3.8.0, model hertz"}
+          ("liggghts", "hertz"): "LIGGGHTS 3.8.0, model hertz",
+          ("yade", "mindlin"): "YADE 2023.02a, Hertz-Mindlin en (Thornton's fit, clamped)"}
 
 
 def main():
@@ -29,7 +30,7 @@ def main():
     a = p.parse_args()
     with open(os.path.join(a.data, "builtin_conversion_error.csv")) as f:
         rows = list(csv.DictReader(f))
-    fig, axes = plt.subplots(2, 2, figsize=(11, 8), sharex=True)
+    fig, axes = plt.subplots(len(TITLES), 2, figsize=(11, 4 * len(TITLES)), sharex=True)
     for i, key in enumerate(TITLES):
         sel = [r for r in rows if (r["code"], r["damping"]) == key and r["outcome"] == "rebound"]
         for j, column in enumerate(["error", "error_percent_of_one_minus_e"]):
@@ -46,7 +47,7 @@ def main():
             ax.axhline(0, color="k", lw=0.5)
             ax.set_title(TITLES[key], fontsize=10)
             ax.set_ylabel("e_code - e_target" if j == 0 else "(e_code - e_target) / (1 - e_target)  [%]")
-            if i == 1:
+            if i == len(TITLES) - 1:
                 ax.set_xlabel("target e (written into the deck)")
     axes[0][0].legend(fontsize=7, ncol=2)
     fig.suptitle("Built-in e -> damping conversions: bead R = 1 mm on a rigid wall, gravity 9.81 m/s^2", fontsize=11)

@@ -26,8 +26,8 @@ std::vector<std::string> split_list(const std::string& text) {
 struct dem_command {
   output_options output;
   std::string code, damping, contact = "wall";
-  std::string youngs_modulus, poisson_ratio, radius, density;
-  std::string target_e, deck_damping, v0, gravity, force = "0";
+  std::string youngs_modulus, poisson_ratio, radius, density, stiffness;
+  std::string target_e, deck_damping, deck_en, v0, gravity, force = "0";
   std::string speeds = "0.001,0.01,0.1,1,10";
   int digits = 15;
 
@@ -40,25 +40,47 @@ struct dem_command {
     require(damping, "--damping", "the code's damping model");
     const dem::dem_model& model = dem::find_dem_model(code, damping);
     const dem::contact_kind kind = dem::parse_contact_kind(contact);
-    require(youngs_modulus, "--youngs-modulus", "Pa");
-    require(poisson_ratio, "--poisson-ratio", "dimensionless");
+    const bool linear = dem::takes_linear_stiffness(model);
+    if (linear) {  // YADE's visco-elastic law: a linear spring, not a Hertz contact of the material
+      require(stiffness, "--k", "the contact's normal stiffness kn, N/m: the visco-elastic law is a linear spring");
+      for (const auto& [value, option] : {std::pair{&youngs_modulus, "--youngs-modulus"}, {&poisson_ratio, "--poisson-ratio"}})
+        if (!value->empty())
+          throw invalid_parameter(std::string(option) + " " + *value + " is not an input of " + code + " " + damping +
+                                  ": its linear spring takes the contact stiffness --k (N/m), not a Hertz material");
+    } else {
+      if (!stiffness.empty())
+        throw invalid_parameter("--k " + stiffness + " is the linear stiffness of yade viscoelastic; " + code + " " +
+                                damping + " takes its Hertz stiffness from --youngs-modulus and --poisson-ratio");
+      require(youngs_modulus, "--youngs-modulus", "Pa");
+      require(poisson_ratio, "--poisson-ratio", "dimensionless");
+    }
     require(radius, "--radius", "m");
     require(density, "--density", "kg/m^3");
     require(gravity, "--gravity", "m/s^2 towards the wall; 0 for none");
-    const bool reverse = !deck_damping.empty();
+    if (!deck_damping.empty() && !deck_en.empty())
+      throw invalid_parameter("give either --deck-damping (the deck's betan) or --deck-en (YADE's en), not both");
+    if (!deck_en.empty() && model.damping != dem::damping_model::mindlin)
+      throw invalid_parameter("--deck-en " + deck_en + " is YADE's `en` input of Hertz-Mindlin (yade --damping "
+                              "mindlin), not an input of " + code + " " + damping);
+    const bool reverse = !deck_damping.empty() || !deck_en.empty();
     if (reverse && !target_e.empty())
-      throw invalid_parameter("give either --target-e (deck for a measured e) or --deck-damping (e for a deck), not both");
+      throw invalid_parameter("give either --target-e (deck for a measured e) or --deck-damping/--deck-en (e for a "
+                              "deck), not both");
     if (!reverse) {
       require(target_e, "--target-e", "the measured coefficient of restitution, 0 < e < 1");
       require(v0, "--v0", "impact speed, m/s");
     }
     with_working_precision(digits, [&]<class Real>() {
       dem::dem_impact<Real> impact;
-      impact.bead.youngs_modulus = parse_real<Real>(youngs_modulus, "youngs_modulus");
-      impact.bead.poisson_ratio = parse_real<Real>(poisson_ratio, "poisson_ratio");
       impact.bead.radius = parse_real<Real>(radius, "radius");
       impact.bead.density = parse_real<Real>(density, "density");
-      impact.bead.validate();
+      if (linear) {
+        impact.stiffness = parse_real<Real>(stiffness, "k");
+      } else {
+        impact.bead.youngs_modulus = parse_real<Real>(youngs_modulus, "youngs_modulus");
+        impact.bead.poisson_ratio = parse_real<Real>(poisson_ratio, "poisson_ratio");
+        impact.bead.validate();
+      }
       impact.kind = kind;
       impact.gravity = parse_real<Real>(gravity, "gravity");
       impact.force = parse_real<Real>(force, "force");
@@ -71,23 +93,30 @@ struct dem_command {
       j["clamped"] = model.clamped;  // the code sets a pulling normal force to zero
       j["version"] = std::string(model.version);
       j["source"] = std::string(model.source);
-      j["material"] = {{"youngs_modulus", youngs_modulus},
-                       {"poisson_ratio", poisson_ratio},
-                       {"radius", radius},
-                       {"density", density}};
+      if (linear)
+        j["material"] = {{"radius", radius}, {"density", density}};
+      else
+        j["material"] = {{"youngs_modulus", youngs_modulus},
+                         {"poisson_ratio", poisson_ratio},
+                         {"radius", radius},
+                         {"density", density}};
       j["gravity"] = gravity;
       j["force"] = force;
-      const dem::hertz_contact<Real> c = dem::make_hertz_contact(impact.bead, kind);
-      j["effective_modulus_pa"] = number(c.effective_modulus);
+      const dem::hertz_contact<Real> c = dem::model_contact(model, impact);
+      if (!linear) j["effective_modulus_pa"] = number(c.effective_modulus);
       j["effective_radius_m"] = number(c.effective_radius);
       j["effective_mass_kg"] = number(c.effective_mass);
       j["stiffness"] = number(c.stiffness);
       std::ostringstream text;
       text << "code        " << model.version << "\n"
            << "model       " << code << " damping " << damping << " on a " << contact << " (viscor law "
-           << model.law_name << ")\n"
-           << "contact     E* = " << number(c.effective_modulus) << " Pa, R* = " << number(c.effective_radius)
-           << " m, m* = " << number(c.effective_mass) << " kg, k = " << number(c.stiffness) << " N/m^1.5\n";
+           << model.law_name << ")\n";
+      if (linear)
+        text << "contact     linear spring k = " << number(c.stiffness) << " N/m, m* = " << number(c.effective_mass)
+             << " kg\n";
+      else
+        text << "contact     E* = " << number(c.effective_modulus) << " Pa, R* = " << number(c.effective_radius)
+             << " m, m* = " << number(c.effective_mass) << " kg, k = " << number(c.stiffness) << " N/m^1.5\n";
       if (reverse)
         run_reverse<Real>(model, impact, j, text);
       else
@@ -102,14 +131,24 @@ struct dem_command {
     const Real target = parse_real<Real>(target_e, "target_e");
     calibration_options<Real> options;
     const dem::dem_deck<Real> d = dem::dem_deck_for(model, impact, target, options);
-    dem::deck_strings s{to_decimal_string(d.youngs_modulus), to_decimal_string(d.poisson_ratio),
-                        to_decimal_string(d.damping), std::nullopt};
-    if (d.wall_youngs_modulus) s.wall_youngs_modulus = dem::liggghts_rigid_wall_modulus;
+    dem::deck_strings s;
+    s.damping = to_decimal_string(d.damping);
     json deck;
-    deck["youngs_modulus"] = s.youngs_modulus;
+    if (d.stiffness) {  // YADE visco-elastic: the bead material's kn, cn; a rigid wall material
+      s.stiffness = to_decimal_string(*d.stiffness);
+      if (impact.kind == dem::contact_kind::wall) s.wall_youngs_modulus = dem::yade_rigid_wall_viscel;
+      deck["kn"] = s.stiffness;
+      deck["cn"] = s.damping;
+      if (s.wall_youngs_modulus) deck["wall_kn"] = deck["wall_cn"] = *s.wall_youngs_modulus;
+    } else {
+      s.youngs_modulus = to_decimal_string(d.youngs_modulus);
+      s.poisson_ratio = to_decimal_string(d.poisson_ratio);
+      if (d.wall_youngs_modulus) s.wall_youngs_modulus = dem::liggghts_rigid_wall_modulus;
+      deck["youngs_modulus"] = s.youngs_modulus;
+      deck["poisson_ratio"] = s.poisson_ratio;
+      if (s.wall_youngs_modulus) deck["wall_youngs_modulus"] = *s.wall_youngs_modulus;
+    }
     deck["damping"] = s.damping;
-    deck["poisson_ratio"] = s.poisson_ratio;
-    if (s.wall_youngs_modulus) deck["wall_youngs_modulus"] = *s.wall_youngs_modulus;
     deck["damping_kind"] = model.deck_kind == dem::deck_damping_kind::coefficient ? "coefficient"
                                                                                    : "coefficient_of_restitution";
     j["target_e"] = target_e;
@@ -126,16 +165,29 @@ struct dem_command {
          << " m/s^2, force = " << force << " N\n"
          << "viscor      gamma0 = " << number(d.gamma0) << " (scaled gamma = " << number(d.calibration.scaled.gamma)
          << ", g = " << number(d.calibration.scaled.g) << "), e = " << number(d.calibration.scaled.e) << "\n"
-         << "deck        youngs_modulus = " << s.youngs_modulus << ", poisson_ratio = " << s.poisson_ratio
-         << ", damping = " << s.damping << "\n";
-    if (s.wall_youngs_modulus) text << "            wall type youngs_modulus = " << *s.wall_youngs_modulus << " (rigid)\n";
+         << "deck        ";
+    if (d.stiffness) {
+      text << "bead material kn = " << s.stiffness << " N/m, cn = " << s.damping << " N s/m\n";
+      if (s.wall_youngs_modulus) text << "            wall material kn = cn = " << *s.wall_youngs_modulus << " (rigid)\n";
+    } else {
+      text << "youngs_modulus = " << s.youngs_modulus << ", poisson_ratio = " << s.poisson_ratio
+           << ", damping = " << s.damping << "\n";
+      if (s.wall_youngs_modulus) text << "            wall type youngs_modulus = " << *s.wall_youngs_modulus << " (rigid)\n";
+    }
     if (d.builtin_e) {
       const Real miss = *d.builtin_e - target;
       j["builtin_e"] = number(*d.builtin_e);
       j["builtin_error"] = number(miss);
       j["builtin_error_percent_of_one_minus_e"] = number(dem::percent_of_one_minus_e(*d.builtin_e, target));
       const bool yade = model.code == dem::dem_code::yade;
-      if (yade) j["builtin_conversion"] = "Ip2_FrictMat_FrictMat_MindlinPhys(en=target_e) instead of betan (Thornton et al. 2013 fit)";
+      if (model.damping == dem::damping_model::mindlin)
+        j["builtin_conversion"] = "Ip2_FrictMat_FrictMat_MindlinPhys(en=target_e) instead of betan (Thornton et al. 2013 fit)";
+      if (d.builtin_tc) {
+        j["builtin_tc_s"] = number(*d.builtin_tc);
+        j["builtin_conversion"] = "ViscElMat(tc=builtin_tc_s, en=target_e, et=target_e) for bead and wall instead of kn, "
+                                  "cn: YADE's kn is then k, its cn comes from the reduced mass m/2";
+        text << "builtin     tc = " << to_decimal_string(*d.builtin_tc, 10) << " s gives YADE's kn = k\n";
+      }
       text << "builtin     writing " << (yade ? "en = " : "e = ") << target_e << " into the " << (yade ? "input" : "deck") << " gives e = " << to_decimal_string(*d.builtin_e, 10)
            << " (" << to_decimal_string(miss, 3) << ", " << to_decimal_string(dem::percent_of_one_minus_e(*d.builtin_e, target), 3)
            << " % of 1 - e)\n";
@@ -152,7 +204,17 @@ struct dem_command {
 
   template <class Real>
   void run_reverse(const dem::dem_model& model, dem::dem_impact<Real>& impact, json& j, std::ostringstream& text) const {
-    const Real deck_value = parse_real<Real>(deck_damping, "deck_damping");
+    Real deck_value;
+    if (!deck_en.empty()) {  // YADE's own conversion: `en` becomes betan by Thornton's fit
+      const Real en = parse_real<Real>(deck_en, "deck_en");
+      if (!(en > 0 && en <= 1))
+        throw invalid_parameter("parameter deck_en must be in (0, 1], got " + to_decimal_string(en));
+      deck_value = dem::yade_thornton_betan(en);
+      j["deck_en"] = deck_en;
+      j["builtin_conversion"] = "Ip2_FrictMat_FrictMat_MindlinPhys(en=deck_en): betan by Thornton et al. (2013)";
+    } else {
+      deck_value = parse_real<Real>(deck_damping, "deck_damping");
+    }
     dem::validate_deck_damping(model, deck_value);
     std::vector<std::string> speed_list = split_list(speeds);
     if (!v0.empty()) speed_list.insert(speed_list.begin(), v0);
@@ -160,10 +222,13 @@ struct dem_command {
     struct load { std::string gravity, force; };
     std::vector<load> loads{{"0", "0"}};
     if (impact.gravity != 0 || impact.force != 0) loads.push_back({gravity, force});
-    j["deck_damping"] = deck_damping;
+    j["deck_damping"] = deck_en.empty() ? deck_damping : to_decimal_string(deck_value);
     j["damping_number"] = number(dem::damping_number(model, deck_value));
     json rows = json::array();
-    text << "deck        damping = " << deck_damping << " (the deck modulus as viscor dem writes it)\n"
+    if (!deck_en.empty()) text << "deck        en = " << deck_en << " (YADE's own conversion)\n";
+    text << "deck        damping = " << (deck_en.empty() ? deck_damping : to_decimal_string(deck_value))
+         << (dem::takes_linear_stiffness(model) ? " (the bead material's cn, N s/m; its kn as viscor dem writes it)\n"
+                                                : " (the deck modulus as viscor dem writes it)\n")
          << "v0 (m/s)    gravity (m/s^2)  force (N)  e\n";
     for (const std::string& speed : speed_list) {
       for (const load& l : loads) {
@@ -192,15 +257,20 @@ void setup(CLI::App& app) {
   cmd->output.add_to(app);
   app.add_option("code", cmd->code, "DEM code: lammps (29 Sep 2021), liggghts (3.8.0) or yade (2023.02a)");
   app.add_option("--damping", cmd->damping,
-                 "damping model: lammps velocity|mass_velocity|viscoelastic|tsuji, liggghts hertz, yade mindlin");
+                 "damping model: lammps velocity|mass_velocity|viscoelastic|tsuji, liggghts hertz, yade "
+                 "mindlin|viscoelastic");
   app.add_option("--contact", cmd->contact, "wall (bead on a rigid wall) or pair (two identical beads)")
       ->capture_default_str();
   app.add_option("--youngs-modulus", cmd->youngs_modulus, "Young's modulus E of the bead, Pa");
   app.add_option("--poisson-ratio", cmd->poisson_ratio, "Poisson ratio of the bead");
+  app.add_option("--k", cmd->stiffness,
+                 "yade viscoelastic: the contact's normal stiffness kn of its linear spring, N/m (no Hertz material)");
   app.add_option("--radius", cmd->radius, "bead radius, m");
   app.add_option("--density", cmd->density, "bead density, kg/m^3");
   app.add_option("--target-e", cmd->target_e, "measured coefficient of restitution to reproduce, 0 < e < 1");
   app.add_option("--deck-damping", cmd->deck_damping, "reverse: the deck's damping entry; prints the e it gives");
+  app.add_option("--deck-en", cmd->deck_en,
+                 "reverse, yade mindlin: YADE's own input en (turned into betan by Thornton's fit); prints the e it gives");
   app.add_option("--v0", cmd->v0, "impact (approach) speed, m/s");
   app.add_option("--gravity", cmd->gravity, "gravitational acceleration towards the wall, m/s^2 (required; 0 for none)");
   app.add_option("--force", cmd->force, "constant force pressing the bead on the wall (or the pair together), N")

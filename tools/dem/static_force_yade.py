@@ -12,11 +12,14 @@ from yade import utils
 R, E, NU, RHO = 1e-3, 1e8, 0.3, 2500.0
 
 
-def force(contact, law, ip, mat, rate, wall_e=1e30):
+def force(contact, law, ip, mat, rate, wall_e=1e30, wall_mat=None):
     O.reset()
     bead = O.materials.append(mat)
     if contact == 'wall':
-        wm = O.materials.append(FrictMat(young=wall_e, poisson=NU, density=RHO, frictionAngle=0)) if wall_e else bead
+        if wall_mat:
+            wm = O.materials.append(wall_mat)
+        else:
+            wm = O.materials.append(FrictMat(young=wall_e, poisson=NU, density=RHO, frictionAngle=0)) if wall_e else bead
         s = utils.sphere((0, 0, 0.000998), R, material=bead)
         O.bodies.append([utils.wall(0, axis=2, material=wm), s])
         s.state.vel = (0, 0, -rate)
@@ -47,3 +50,18 @@ visc = ViscElMat(kn=1e4, cn=0.2, ks=0, cs=0, density=RHO, frictionAngle=0)
 for rate in (0.05, -0.5):
     f = force('wall', Law2_ScGeom_ViscElPhys_Basic(), Ip2_ViscElMat_ViscElMat_ViscElPhys(), visc, rate, wall_e=None)
     print('YADE viscel kn_cn wall 0.2 %r %.17g' % (rate, f))
+# Visco-elastic law on a rigid wall (its material kn = cn = 1e30 N/m, N s/m), and a pair of
+# beads (half of each material value), as viscor dem yade --damping viscoelastic writes them.
+rigid = ViscElMat(kn=1e30, cn=1e30, ks=0, cs=0, density=RHO, frictionAngle=0)
+for contact, rate in (('wall', 0.05), ('wall', -0.5), ('pair', 0.1)):
+    f = force(contact, Law2_ScGeom_ViscElPhys_Basic(), Ip2_ViscElMat_ViscElMat_ViscElPhys(), visc, rate, wall_mat=rigid)
+    print('YADE viscel_rigid kn_cn %s 0.2 %r %.17g' % (contact, rate, f))
+# YADE's own conversion: ViscElMat(tc=1e-5 s, en=0.5, et=0.5) on bead and wall alike.
+def tcen():  # a fresh material each time: one instance appended twice confuses YADE's material ids
+    return ViscElMat(tc=1e-5, en=0.5, et=0.5, density=RHO, frictionAngle=0)
+
+
+for contact, rate in (('wall', 0.05), ('pair', 0.1)):
+    f = force(contact, Law2_ScGeom_ViscElPhys_Basic(), Ip2_ViscElMat_ViscElMat_ViscElPhys(), tcen(), rate,
+              wall_mat=tcen())
+    print('YADE viscel_tc_en en %s 0.5 %r %.17g' % (contact, rate, f))

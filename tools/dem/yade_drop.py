@@ -1,8 +1,11 @@
-# Single-bead drops on a rigid wall in YADE (Hertz-Mindlin, betan), several per
+# Single-bead drops on a rigid wall in YADE (Hertz-Mindlin or visco-elastic), several per
 # run (yade starts slowly): VISCOR_YADE_CASES=cases.json yade -n -x tools/dem/yade_drop.py
 # cases.json: a list of {"young", "poisson", "density", "radius", "betan", "v0",
 # "gravity", "dt", "max_steps"} with the strings viscor dem prints ("en" instead of
-# "betan": YADE's own conversion). For each case
+# "betan": YADE's own conversion). With "law": "viscel" the visco-elastic law
+# (ViscElMat, Law2_ScGeom_ViscElPhys_Basic): "kn", "cn" of the bead's material and
+# "wall_kn", "wall_cn" of the wall's (ks = cs = 0), or "tc", "en" for both (YADE's
+# own conversion, et = en). For each case
 # prints "DROP i e ok force_free" where e is the rebound speed over v0 at zero
 # overlap. After the force has dropped to zero (YADE's clamp) the bead flies
 # under gravity alone, and velocity Verlet's positions lie exactly on that
@@ -22,13 +25,27 @@ def physics(c):
     return Ip2_FrictMat_FrictMat_MindlinPhys(betan=float(c['betan']))
 
 
+def viscel_materials(c):
+    rho = float(c['density'])
+    if 'tc' in c:  # YADE's own conversion: kn, cn from tc, en and the reduced mass
+        tc, en = float(c['tc']), float(c['en'])
+        return [ViscElMat(tc=tc, en=en, et=en, density=rho, frictionAngle=0) for _ in range(2)]
+    return [ViscElMat(kn=float(c['kn']), cn=float(c['cn']), ks=0, cs=0, density=rho, frictionAngle=0),
+            ViscElMat(kn=float(c['wall_kn']), cn=float(c['wall_cn']), ks=0, cs=0, density=rho, frictionAngle=0)]
+
+
 def drop(c):
     O.reset()
     R = float(c['radius'])
-    bead = O.materials.append(FrictMat(young=float(c['young']), poisson=float(c['poisson']),
-                                       density=float(c['density']), frictionAngle=0))
-    rigid = O.materials.append(FrictMat(young=1e30, poisson=float(c['poisson']), density=float(c['density']),
-                                        frictionAngle=0))
+    viscel = c.get('law') == 'viscel'
+    if viscel:
+        bead_mat, wall_mat = viscel_materials(c)
+    else:
+        bead_mat = FrictMat(young=float(c['young']), poisson=float(c['poisson']), density=float(c['density']),
+                            frictionAngle=0)
+        wall_mat = FrictMat(young=1e30, poisson=float(c['poisson']), density=float(c['density']), frictionAngle=0)
+    bead = O.materials.append(bead_mat)
+    rigid = O.materials.append(wall_mat)
     v0, g, dt = float(c['v0']), float(c['gravity']), float(c['dt'])
     pair = c.get('contact') == 'pair'
     if pair:  # two beads touching on the z axis, approaching at v0, pressed together by `force` each
@@ -45,8 +62,9 @@ def drop(c):
         O.bodies.append([utils.wall(0, axis=2, material=rigid), s])
         s.state.vel = (0, 0, -v0)
     O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Wall_Aabb()]),
-                 InteractionLoop([Ig2_Wall_Sphere_ScGeom(), Ig2_Sphere_Sphere_ScGeom()], [physics(c)],
-                                 [Law2_ScGeom_MindlinPhys_Mindlin()]),
+                 InteractionLoop([Ig2_Wall_Sphere_ScGeom(), Ig2_Sphere_Sphere_ScGeom()],
+                                 [Ip2_ViscElMat_ViscElMat_ViscElPhys() if viscel else physics(c)],
+                                 [Law2_ScGeom_ViscElPhys_Basic() if viscel else Law2_ScGeom_MindlinPhys_Mindlin()]),
                  NewtonIntegrator(damping=0, gravity=(0, 0, -g))]
     O.dt = dt
     deltas, forces = [0.0], []

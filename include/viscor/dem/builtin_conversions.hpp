@@ -7,7 +7,10 @@
 //   LIGGGHTS model hertz: coefficientRestitution e gives
 //       b(e) = -ln e / sqrt(ln^2 e + pi^2)   (the code keeps the sign; the force uses |b|),
 //     which is in [0, 1) for e in (0, 1].
-// Both come from linear-spring or no-load fits; viscor measures how far off they
+//   YADE Hertz-Mindlin `en`: betan by Thornton et al.'s fit (yade_thornton_betan).
+//   YADE ViscElMat(tc, en, et): kn and cn of a linear spring from tc, en and a
+//     reduced mass that counts a wall with the bead's mass (yade_viscel_from_tc_en).
+// All come from linear-spring or no-load fits; viscor measures how far off they
 // are under load (dem_calibration.hpp).
 #pragma once
 
@@ -62,6 +65,33 @@ Real yade_thornton_betan(const Real& e) {
   for (int i = 8; i >= 0; --i) a = a * e + parse_real<Real>(h[i], "Thornton coefficient");
   a *= e;
   return Real(sqrt(1 / (1 - (1 + e) * (1 + e) * exp(a)) - 1));
+}
+
+/// YADE 2023.02a ViscElMat(tc, en, et) on both bodies (Ip2_ViscElMat_ViscElMat_ViscElPhys):
+/// the contact's kn = (pi^2 + ln^2 en) m_R / tc^2 and cn = -2 ln(en) m_R / tc, with
+/// m_R = m1 m2 / (m1 + m2) where a massless body (a wall) counts with the other's
+/// mass: m_R = m/2 on a wall (where the bead's own mass m moves) and for a pair.
+template <class Real>
+struct yade_viscel_contact {
+  Real kn = 0;  ///< N/m
+  Real cn = 0;  ///< N s/m
+};
+
+/// The contact's kn, cn YADE derives from tc, en and the reduced mass m_R (above).
+template <class Real>
+yade_viscel_contact<Real> yade_viscel_from_tc_en(const Real& tc, const Real& en, const Real& reduced_mass) {
+  using std::log;
+  const Real l = log(en), pi = boost::math::constants::pi<Real>();
+  return {Real((pi * pi + l * l) * reduced_mass / (tc * tc)), Real(-2 * l * reduced_mass / tc)};
+}
+
+/// The tc for which YADE's kn (yade_viscel_from_tc_en) equals the stiffness kn, N/m.
+template <class Real>
+Real yade_viscel_tc_for_stiffness(const Real& kn, const Real& en, const Real& reduced_mass) {
+  using std::log;
+  using std::sqrt;
+  const Real l = log(en), pi = boost::math::constants::pi<Real>();
+  return Real(sqrt((pi * pi + l * l) * reduced_mass / kn));
 }
 
 /// The e in [0, 1] whose LAMMPS tsuji polynomial equals `damping`; unreachable_target

@@ -23,6 +23,13 @@
 //   other is not dynamic, else m1 m2 / (m1 + m2). A wall material with E = 1e30 is
 //   rigid, and the deck E = sqrt(2) E makes kno the physical k. D = betan,
 //   P = sqrt(6) sqrt(m* k); the clamp at zero is impact/clamped_impact.hpp.
+// YADE 2023.02a (ViscElMat(kn, cn, ks, cs), Ip2_ViscElMat_ViscElMat_ViscElPhys,
+// Law2_ScGeom_ViscElPhys_Basic): F = max(0, kn delta + cn d(delta)/dt), a linear spring
+//   whose contact kn, cn are the harmonic combinations 1/(1/x1 + 1/x2) of the two
+//   materials' values: a wall material with kn = cn = 1e30 is rigid (the contact
+//   takes the bead's values), two beads of one material take half of each. The
+//   stiffness is the user's (--k = the contact's kn); D = the bead material's cn,
+//   P = 1 on a wall, 1/2 for a pair; alpha = beta = 1, gamma0 = D P / k.
 #pragma once
 
 #include <viscor/dem/builtin_conversions.hpp>
@@ -34,6 +41,10 @@ namespace viscor::dem {
 /// A wall type modulus that makes a LIGGGHTS wall rigid to double precision:
 /// (1 - nu^2)/1e30 is below 1e-17 of (1 - nu^2)/E for any E < 1e13 Pa.
 inline constexpr const char* liggghts_rigid_wall_modulus = "1e30";
+
+/// kn and cn of a YADE ViscElMat wall material that make the wall rigid: the contact's
+/// 1/(1/kn + 1e-30) is kn to double precision for any kn < 1e14 N/m (likewise cn).
+inline constexpr const char* yade_rigid_wall_viscel = "1e30";
 
 /// The Young's modulus to write in the deck for the bead so that the code's
 /// stiffness is the physical k of make_hertz_contact (Poisson ratio unchanged).
@@ -77,8 +88,29 @@ Real damping_scale(const dem_model& model, const hertz_contact<Real>& c) {
     case damping_model::tsuji: return Real(4 * sqrt(m * k) / (5 * k));
     case damping_model::hertz_restitution: return Real(4 * sqrt(Real(5)) * sqrt(m * k) / (5 * k));
     case damping_model::mindlin: return Real(4 * sqrt(Real(6)) * sqrt(m * k) / (5 * k));
+    case damping_model::yade_viscoelastic:  // two beads of the deck's material: the contact's cn is half of it
+      return c.kind == contact_kind::wall ? Real(1 / k) : Real(1 / (2 * k));
   }
   throw invalid_parameter("damping_scale: unknown damping model");
+}
+
+/// YADE visco-elastic: the bead material's kn that gives the contact stiffness k
+/// (k on a rigid wall; 2 k for two beads of the material).
+template <class Real>
+Real yade_viscel_deck_stiffness(const hertz_contact<Real>& c) {
+  return c.kind == contact_kind::wall ? c.stiffness : Real(2 * c.stiffness);
+}
+
+/// YADE visco-elastic: the normal force the code computes at overlap delta > 0 and
+/// overlap rate delta_rate (> 0 approaching) for the materials' kn, cn (the wall's on
+/// a wall; for a pair both beads carry the bead's): harmonic combinations, clamped at 0.
+template <class Real>
+Real yade_viscel_normal_force(contact_kind kind, const Real& kn, const Real& cn, const Real& wall_kn,
+                              const Real& wall_cn, const Real& delta, const Real& delta_rate) {
+  auto combine = [](const Real& a, const Real& b) { return Real(1 / (1 / a + 1 / b)); };
+  const bool wall = kind == contact_kind::wall;
+  const Real force = combine(kn, wall ? wall_kn : kn) * delta + combine(cn, wall ? wall_cn : cn) * delta_rate;
+  return force < 0 ? Real(0) : force;
 }
 
 /// The damping number D the code uses for a deck damping entry.

@@ -15,6 +15,7 @@ namespace viscor::dem {
 struct deck_strings {
   std::string youngs_modulus, poisson_ratio, damping;
   std::optional<std::string> wall_youngs_modulus;  ///< LIGGGHTS wall type, YADE wall material
+  std::string stiffness;  ///< YADE visco-elastic: the bead material's kn, N/m (damping: its cn, N s/m)
 };
 
 /// A ready-to-paste input snippet of the model's code with the deck values `d`.
@@ -36,22 +37,38 @@ inline std::string deck_snippet(const dem_model& model, contact_kind kind, const
   if (model.code == dem_code::yade) {
     // NOTE: NewtonIntegrator damps every body by 0.2 unless told otherwise: damping=0.
     const bool wall = kind == contact_kind::wall;
-    s += "# YADE 2023.02a, Hertz-Mindlin with viscous damping betan (the total normal force is clamped at 0)\n";
-    s += "bead = O.materials.append(FrictMat(young=" + d.youngs_modulus + ", poisson=" + d.poisson_ratio +
-         ", density=DENSITY, frictionAngle=0))\n";
-    if (wall) {
-      s += "# rigid wall; YADE takes R* = R/2 on a wall, hence the bead's young = sqrt(2) E\n";
-      s += "rigid = O.materials.append(FrictMat(young=" + d.wall_youngs_modulus.value_or(d.youngs_modulus) +
-           ", poisson=" + d.poisson_ratio + ", density=DENSITY, frictionAngle=0))\n";
-      s += "O.bodies.append([utils.wall(0, axis=2, material=rigid), utils.sphere((0, 0, RADIUS), RADIUS, material=bead)])\n";
+    const bool viscel = model.damping == damping_model::yade_viscoelastic;
+    std::string ip2, law;
+    if (viscel) {
+      s += "# YADE 2023.02a, visco-elastic law: linear spring kn, dashpot cn (the total normal force is clamped at 0)\n";
+      s += "# the contact takes 1/(1/x1 + 1/x2) of the two materials' kn and cn: " +
+           std::string(wall ? "a 1e30 wall is rigid\n" : "two beads of this material, half of each\n");
+      s += "bead = O.materials.append(ViscElMat(kn=" + d.stiffness + ", cn=" + d.damping +
+           ", ks=0, cs=0, density=DENSITY, frictionAngle=0))\n";
+      if (wall)
+        s += "rigid = O.materials.append(ViscElMat(kn=" + d.wall_youngs_modulus.value_or(d.stiffness) + ", cn=" +
+             d.wall_youngs_modulus.value_or(d.damping) + ", ks=0, cs=0, density=DENSITY, frictionAngle=0))\n";
+      ip2 = "Ip2_ViscElMat_ViscElMat_ViscElPhys()", law = "Law2_ScGeom_ViscElPhys_Basic()";
     } else {
+      s += "# YADE 2023.02a, Hertz-Mindlin with viscous damping betan (the total normal force is clamped at 0)\n";
+      s += "bead = O.materials.append(FrictMat(young=" + d.youngs_modulus + ", poisson=" + d.poisson_ratio +
+           ", density=DENSITY, frictionAngle=0))\n";
+      if (wall) {
+        s += "# rigid wall; YADE takes R* = R/2 on a wall, hence the bead's young = sqrt(2) E\n";
+        s += "rigid = O.materials.append(FrictMat(young=" + d.wall_youngs_modulus.value_or(d.youngs_modulus) +
+             ", poisson=" + d.poisson_ratio + ", density=DENSITY, frictionAngle=0))\n";
+      }
+      ip2 = "Ip2_FrictMat_FrictMat_MindlinPhys(betan=" + d.damping + ")", law = "Law2_ScGeom_MindlinPhys_Mindlin()";
+    }
+    if (wall)
+      s += "O.bodies.append([utils.wall(0, axis=2, material=rigid), utils.sphere((0, 0, RADIUS), RADIUS, material=bead)])\n";
+    else
       s += "O.bodies.append([utils.sphere((0, 0, 0), RADIUS, material=bead), "
            "utils.sphere((0, 0, 2 * RADIUS), RADIUS, material=bead)])\n";
-    }
     s += "O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Sphere_Aabb()" +
          std::string(wall ? ", Bo1_Wall_Aabb()" : "") + "]),\n";
     s += "    InteractionLoop([" + std::string(wall ? "Ig2_Wall_Sphere_ScGeom()" : "Ig2_Sphere_Sphere_ScGeom()") +
-         "], [Ip2_FrictMat_FrictMat_MindlinPhys(betan=" + d.damping + ")], [Law2_ScGeom_MindlinPhys_Mindlin()]),\n";
+         "], [" + ip2 + "], [" + law + "]),\n";
     s += "    NewtonIntegrator(damping=0, gravity=(0, 0, -GRAVITY))]\n";
     return s;
   }

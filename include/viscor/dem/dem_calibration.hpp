@@ -34,7 +34,26 @@ struct dem_impact {
   Real v0 = 0;       ///< impact (approach) speed, m/s
   Real gravity = 0;  ///< m/s^2 towards the wall (drops out for a pair)
   Real force = 0;    ///< N pressing the bead on the wall (or the pair together)
+  Real stiffness = 0;  ///< the contact's linear stiffness kn, N/m (only models that take it: takes_linear_stiffness)
 };
+
+/// The contact the code should simulate: Hertz from the bead's material, or for a
+/// linear-spring model the user's stiffness with the bead's mass (E and nu unused).
+template <class Real>
+hertz_contact<Real> model_contact(const dem_model& model, const dem_impact<Real>& impact) {
+  if (!takes_linear_stiffness(model)) return make_hertz_contact(impact.bead, impact.kind);
+  require_positive(impact.stiffness, "k");
+  require_positive(impact.bead.radius, "radius");
+  require_positive(impact.bead.density, "density");
+  hertz_contact<Real> c;
+  const bool wall = impact.kind == contact_kind::wall;
+  c.kind = impact.kind;
+  c.bead_mass = impact.bead.mass();
+  c.effective_radius = wall ? impact.bead.radius : Real(impact.bead.radius / 2);
+  c.effective_mass = wall ? c.bead_mass : Real(c.bead_mass / 2);
+  c.stiffness = impact.stiffness;  // F = k delta + damping; effective_modulus stays 0 (no Hertz modulus)
+  return c;
+}
 
 /// viscor's physical parameters for the impact (m = m*, see the header comment).
 template <class Real>
@@ -52,7 +71,7 @@ template <class Real>
 impact_result<Real> e_for_deck(const dem_model& model, const dem_impact<Real>& impact, const Real& deck_damping,
                                const solve_options<Real>& options = {}) {
   validate_deck_damping(model, deck_damping);
-  const hertz_contact<Real> c = make_hertz_contact(impact.bead, impact.kind);
+  const hertz_contact<Real> c = model_contact(model, impact);
   const Real gamma0 = damping_number(model, deck_damping) * damping_scale(model, c);
   const contact_law law = law_of(model);
   const scaled_parameters<Real> s = to_scaled(law, physical_impact(c, impact, gamma0));
@@ -111,6 +130,8 @@ struct dem_deck {
   hertz_contact<Real> contact;
   physical_calibration<Real> calibration;
   std::optional<Real> builtin_e;  ///< restitution models (and YADE's `en`): e when the target is written into the deck
+  std::optional<Real> stiffness;  ///< YADE visco-elastic: the bead material's kn, N/m (the wall's: 1e30)
+  std::optional<Real> builtin_tc;  ///< YADE visco-elastic: the tc that, with en = target, gives YADE's kn = k, s
 };
 
 /// The deck that reproduces target_e at this impact; unreachable_target when no
@@ -125,7 +146,7 @@ dem_deck<Real> dem_deck_for(const dem_model& model, const dem_impact<Real>& impa
   require_finite(impact.gravity, "gravity");
   require_finite(impact.force, "force");
   dem_deck<Real> d;
-  d.contact = make_hertz_contact(impact.bead, impact.kind);
+  d.contact = model_contact(model, impact);
   const contact_law law = law_of(model);
   const physical_parameters<Real> p = physical_impact(d.contact, impact, Real(0));
   if (model.clamped) {
@@ -146,6 +167,17 @@ dem_deck<Real> dem_deck_for(const dem_model& model, const dem_impact<Real>& impa
     throw unreachable_target("target_e = " + to_decimal_string(target_e) + " is unreachable with " +
                              std::string(model.code_name) + " " + std::string(model.damping_name) +
                              " at this impact: " + e.what());
+  }
+  if (takes_linear_stiffness(model)) {
+    d.stiffness = yade_viscel_deck_stiffness(d.contact);
+    // YADE's own conversion: ViscElMat(tc, en = target) with the tc that makes its kn = k;
+    // its cn then comes from the reduced mass m/2 (also on a wall, where the bead's m moves).
+    const Real reduced_mass = d.contact.bead_mass / 2;
+    d.builtin_tc = yade_viscel_tc_for_stiffness(d.contact.stiffness, target_e, reduced_mass);
+    const Real contact_cn = yade_viscel_from_tc_en(*d.builtin_tc, target_e, reduced_mass).cn;
+    const Real deck_cn = impact.kind == contact_kind::wall ? contact_cn : Real(2 * contact_cn);
+    d.builtin_e = e_for_deck(model, impact, deck_cn, options.solve).e;
+    return d;
   }
   d.youngs_modulus = deck_youngs_modulus(model, impact.bead, impact.kind);
   d.poisson_ratio = impact.bead.poisson_ratio;

@@ -1,7 +1,8 @@
 // The (DEM code, damping model) pairs viscor can map onto its force law
 //   F = k delta^alpha + gamma0 k d/dt(delta^beta),
 // with the program version each convention was read from and checked against.
-// Every supported model has Hertz elasticity (alpha = 3/2) and a damping force
+// Every supported model but YADE's visco-elastic one (a linear spring of the user's
+// stiffness, alpha = beta = 1) has Hertz elasticity (alpha = 3/2); all have a damping force
 //   F_d = D P delta^(beta - 1) d(delta)/dt,
 // where D is the number written in the deck (or computed by the code from a
 // coefficient of restitution written in the deck) and P depends on the contact
@@ -26,6 +27,7 @@ enum class damping_model {
   tsuji,          ///< LAMMPS: F_d = eta'(e) sqrt(m* K sqrt(R* delta)) delta', eta' a polynomial in the deck's e
   hertz_restitution,  ///< LIGGGHTS model hertz: F_d = sqrt(5) b(e) sqrt(m* k) delta^(1/4) delta', b from the deck's e
   mindlin,  ///< YADE Hertz-Mindlin: F = max(0, k delta^(3/2) + sqrt(6) betan sqrt(m* k) delta^(1/4) delta'), deck betan
+  yade_viscoelastic,  ///< YADE ViscEl: F = max(0, kn delta + cn delta'), a linear spring of the user's stiffness, deck cn
 };
 
 /// What the deck's damping number is.
@@ -52,7 +54,7 @@ inline constexpr std::string_view liggghts_version = "LIGGGHTS-PUBLIC 3.8.0 (Deb
 
 inline constexpr std::string_view yade_version = "YADE 2023.02a (Debian 12 yade 2023.02a-1)";
 
-inline constexpr std::array<dem_model, 6> dem_models{{
+inline constexpr std::array<dem_model, 7> dem_models{{
     {dem_code::lammps, damping_model::velocity, "lammps", "velocity", "hertz_linear_damping",
      deck_damping_kind::coefficient, lammps_version, "src/GRANULAR/pair_granular.cpp, fix_wall_gran.cpp"},
     {dem_code::lammps, damping_model::mass_velocity, "lammps", "mass_velocity", "hertz_linear_damping",
@@ -66,7 +68,13 @@ inline constexpr std::array<dem_model, 6> dem_models{{
      "src/normal_model_hertz.h, src/global_properties.cpp"},
     {dem_code::yade, damping_model::mindlin, "yade", "mindlin", "tsuji", deck_damping_kind::coefficient, yade_version,
      "pkg/dem/HertzMindlin.cpp (Ip2_FrictMat_FrictMat_MindlinPhys, Law2_ScGeom_MindlinPhys_Mindlin)", true},
+    {dem_code::yade, damping_model::yade_viscoelastic, "yade", "viscoelastic", "linear", deck_damping_kind::coefficient,
+     yade_version, "pkg/dem/ViscoelasticPM.cpp (Ip2_ViscElMat_ViscElMat_ViscElPhys, Law2_ScGeom_ViscElPhys_Basic)", true},
 }};
+
+/// Models whose stiffness is not Hertz from the material but a linear spring the
+/// user gives (--k, N/m): YADE's visco-elastic law.
+inline bool takes_linear_stiffness(const dem_model& m) { return m.damping == damping_model::yade_viscoelastic; }
 
 /// The model for a code and damping name, or invalid_parameter naming the bad value.
 inline const dem_model& find_dem_model(const std::string& code, const std::string& damping) {
@@ -80,9 +88,6 @@ inline const dem_model& find_dem_model(const std::string& code, const std::strin
   std::string names;
   for (const auto& m : dem_models)
     if (m.code_name == code) names += (names.empty() ? "" : ", ") + std::string(m.damping_name);
-  if (code == "yade" && damping == "viscoelastic")
-    throw invalid_parameter("damping model 'viscoelastic' (Law2_ScGeom_ViscElPhys_Basic, a linear spring) is not "
-                            "supported yet: it has no Hertz stiffness from the material; expected one of " + names);
   if (code == "lammps" && damping == "coeff_restitution")
     throw invalid_parameter("damping model 'coeff_restitution' is not in the installed LAMMPS (29 Sep 2021; it came "
                             "with the granular rewrite of 2023): expected one of " + names);
