@@ -243,6 +243,7 @@ struct compression_record {
 enum class tau_outcome {
   turns_back,  ///< v = 0 again with u > 0 after maximal compression: the bead sticks at that time
   creeps,      ///< the bead creeps to rest without turning back: it sticks, contact_time = +inf
+  sticks_at_unknown_time,  ///< at rest with the energy proven negative: it sticks, contact_time NaN
   undecided,   ///< at rest, or e below the tolerance, without a proof of how the contact ends
   leaves,      ///< nearing u = 0 on the way out: the s mode takes over
 };
@@ -457,12 +458,14 @@ class adaptive_impact_solver {
         if (rest != rest_verdict::moving) {
           // NOTE: E never increases and is v^2/2 >= 0 at u = 0, so E < 0 beyond its
           // error proves the stick even where the settling is not trapped (nearly
-          // critically damped: Hunt-Crossley, gamma = 0.0063, g = 426): a later turn
-          // back, if any, is below the precision, and the contact time is +inf as in
-          // the Taylor solver's "at rest" ending.
-          const bool proven = rest == rest_verdict::trapped || energy_proven_negative(energy, v, p);
-          out.outcome = proven ? tau_outcome::creeps : tau_outcome::undecided;
-          out.contact_time = proven ? inf : nan;
+          // critically damped: Hunt-Crossley, gamma = 0.0063, g = 426). When it turns
+          // back (the contact time) is below the precision: NaN, not +inf (linear law,
+          // gamma = 1.9999, g = 0.5 turns back at tau = 316).
+          const bool trapped = rest == rest_verdict::trapped;
+          out.outcome = trapped                                  ? tau_outcome::creeps
+                        : energy_proven_negative(energy, v, p) ? tau_outcome::sticks_at_unknown_time
+                                                                 : tau_outcome::undecided;
+          out.contact_time = trapped ? inf : nan;
           break;
         }
       }
