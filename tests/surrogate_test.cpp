@@ -23,6 +23,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <sstream>
@@ -188,6 +189,16 @@ TEST_P(CommittedSurrogate, EvaluateUsesItWhereItsBoundMeetsTheTolerance) {
     viscor::evaluate_options relative = options;
     relative.relative = true;
     EXPECT_EQ(viscor::evaluator<double>(law, relative)(gamma, g, 1e-8).method, viscor::evaluation_method::surrogate);
+  }
+  // A stick well past the threshold: e = 0 exactly (a rebound would break the |de^2|
+  // bound), so any tolerance is met. Truth: the Taylor solve in long double.
+  {
+    const double g_stick = 500, gamma_stick = std::min(s->gamma_max, 2 * s->critical_gamma(g_stick));
+    const auto r = ev(gamma_stick, g_stick, 1e-14);
+    EXPECT_EQ(r.method, viscor::evaluation_method::surrogate) << gamma_stick;
+    EXPECT_EQ(r.outcome, viscor::impact_outcome::stick);
+    EXPECT_EQ(r.empirical_bound, 0.0);
+    EXPECT_EQ(viscor::solve_impact<long double>(law, gamma_stick, g_stick).outcome, viscor::impact_outcome::stick);
   }
   // Falls back: outside the domain, tighter than the bound, at a hair from the threshold.
   EXPECT_NE(ev(1.5, 1.0, 1e-10).method, viscor::evaluation_method::surrogate);

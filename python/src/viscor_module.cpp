@@ -20,6 +20,7 @@
 #include <viscor/scenes/error_map.hpp>
 #include <viscor/scenes/evaluate.hpp>
 #include <viscor/surrogate/cor_surrogate.hpp>
+#include <viscor/surrogate/surrogate_source.hpp>
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -234,23 +235,6 @@ std::vector<std::string> method_names() {
   return names;
 }
 
-// The surrogate's value at (gamma, g) when its bound meets the tolerance, where the
-// bound applies (docs/surrogate.md): absolute on e for e >= 1e-2; relative on 1 - e
-// for gamma <= 1e-2 and e >= 1e-2. Sticking verdicts go to evaluate.
-std::optional<evaluation<double>> by_surrogate(const surrogate::cor_surrogate& s, double gamma, double g, double tol,
-                                               bool relative) {
-  if (!s.bound.verified()) return std::nullopt;
-  const surrogate::surrogate_value v = s(gamma, g);
-  if (!v.in_domain || v.outcome != impact_outcome::rebound || !(v.e >= 1e-2)) return std::nullopt;
-  const double bound = relative ? s.bound.rel_one_minus_e : s.bound.abs_e;
-  if (relative && !(gamma <= 1e-2)) return std::nullopt;
-  if (!(bound <= tol)) return std::nullopt;
-  evaluation<double> r;
-  r.e = v.e, r.one_minus_e = v.one_minus_e, r.outcome = v.outcome, r.empirical_bound = bound;
-  r.relative = relative, r.digits = 15;
-  return r;
-}
-
 struct evaluate_request {
   contact_law law;
   bool relative = false;
@@ -289,6 +273,10 @@ py::tuple evaluate(const evaluate_request& q, py::array_t<double, py::array::c_s
     evaluate_options options;
     options.relative = q.relative;
     options.map = map ? &*map : nullptr;
+    // evaluate's own rule decides where the surrogate's bound meets the tolerance.
+    std::optional<surrogate::surrogate_source> source;
+    if (q.surrogate) source.emplace(*q.surrogate);
+    options.surrogate = source ? &*source : nullptr;
     const evaluator<double> evaluate_one(q.law, options);
     // Points are handed out in blocks; the first failing point (lowest index) is reported.
     std::atomic<py::ssize_t> next{0};
@@ -302,15 +290,10 @@ py::tuple evaluate(const evaluate_request& q, py::array_t<double, py::array::c_s
         const py::ssize_t last = std::min(n, first + block);
         for (py::ssize_t i = first; i < last; ++i) {
           try {
-            std::optional<evaluation<double>> r;
-            // Its domain (g < 0 included) is checked inside; bad points go to evaluate_one, which names them.
-            if (q.surrogate && std::isfinite(pg[i]) && std::isfinite(pgg[i]) && pg[i] >= 0)
-              r = by_surrogate(*q.surrogate, pg[i], pgg[i], pt[i], q.relative);
-            const bool from_surrogate = r.has_value();
-            if (!r) r = evaluate_one(pg[i], pgg[i], pt[i]);
-            pe[i] = r->e, pome[i] = r->one_minus_e, pb[i] = r->empirical_bound;
-            pm[i] = from_surrogate ? surrogate_method : static_cast<std::int8_t>(r->method);
-            po[i] = static_cast<std::int8_t>(r->outcome);  // 0 rebound, 1 stick, 2 undecided
+            const evaluation<double> r = evaluate_one(pg[i], pgg[i], pt[i]);
+            pe[i] = r.e, pome[i] = r.one_minus_e, pb[i] = r.empirical_bound;
+            pm[i] = static_cast<std::int8_t>(r.method);
+            po[i] = static_cast<std::int8_t>(r.outcome);  // 0 rebound, 1 stick, 2 undecided
           } catch (const std::exception& ex) {
             const std::lock_guard<std::mutex> lock(failure_mutex);
             if (i < failed_at) {

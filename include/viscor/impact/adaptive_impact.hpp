@@ -36,7 +36,7 @@
 // Undecided (impact_outcome::undecided, contact_time NaN): what the solver cannot
 // prove at its working precision: g = 0 with e <= sqrt(2E) below the tolerance but
 // no barrier, or a state at rest to half the precision without a trapping sector
-// (a turn back, if any, is below the precision).
+// or an energy proven negative (a turn back, if any, is below the precision).
 // A non-finite state or derivative at the start of a GBS step is an error
 // (convergence_error), not a step to retry.
 //
@@ -243,6 +243,7 @@ struct compression_record {
 enum class tau_outcome {
   turns_back,  ///< v = 0 again with u > 0 after maximal compression: the bead sticks at that time
   creeps,      ///< the bead creeps to rest without turning back: it sticks, contact_time = +inf
+  sticks_at_unknown_time,  ///< at rest with the energy proven negative: it sticks, contact_time NaN
   undecided,   ///< at rest, or e below the tolerance, without a proof of how the contact ends
   leaves,      ///< nearing u = 0 on the way out: the s mode takes over
 };
@@ -455,8 +456,15 @@ class adaptive_impact_solver {
       if (compression.energy_stuck && m_law.g > 0) {
         const rest_verdict rest = creeps_to_equilibrium(at.z[0], v);
         if (rest != rest_verdict::moving) {
+          // NOTE: E never increases and is v^2/2 >= 0 at u = 0, so E < 0 beyond its
+          // error proves the stick even where the settling is not trapped (nearly
+          // critically damped: Hunt-Crossley, gamma = 0.0063, g = 426). When it turns
+          // back (the contact time) is below the precision: NaN, not +inf (linear law,
+          // gamma = 1.9999, g = 0.5 turns back at tau = 316).
           const bool trapped = rest == rest_verdict::trapped;
-          out.outcome = trapped ? tau_outcome::creeps : tau_outcome::undecided;
+          out.outcome = trapped                                  ? tau_outcome::creeps
+                        : energy_proven_negative(energy, v, p) ? tau_outcome::sticks_at_unknown_time
+                                                                 : tau_outcome::undecided;
           out.contact_time = trapped ? inf : nan;
           break;
         }
@@ -802,6 +810,16 @@ class adaptive_impact_solver {
   // d/dtau(v + kappa x) has the sign of x (Gamma kappa - kappa^2 - A) >= 0; at v = 0,
   // u'' = -(u^alpha - u*^alpha) points inside), so v never vanishes again: contact_time = inf.
   // Deliberately the same sector argument as taylor_impact.hpp's creep checks, written independently.
+  // Whether E = v^2/2 + u^(alpha+1)/(alpha+1) - g u is negative beyond its rounding
+  // and the error carried in the state (dE = v dw + (u^alpha - g) du, both taken at
+  // the accumulated error of w).
+  bool energy_proven_negative(const W& energy, const W& v, const typename regularised_law<W>::powers& p) const {
+    using std::abs;
+    const W terms = v * v / 2 + p.ua() * p.u() * m_law.inv_alpha_plus_one + abs(m_law.g) * p.u();
+    const W margin = 64 * (epsilon<W>() * terms + m_error * (abs(v) + abs(p.ua() - m_law.g) + 1));
+    return energy < -margin;
+  }
+
   rest_verdict creeps_to_equilibrium(const W& s, const W& v) {
     using std::abs;
     using std::pow;

@@ -9,7 +9,8 @@
 //   0. a surrogate (evaluate_options::surrogate, a fast_cor: core/fast_cor.hpp;
 //      docs/surrogate.md), only inside its domain. Bound: its stated bound (measured
 //      maximum over >= 20,000 certified points it was not fitted to x a safety
-//      factor): |de| where e >= 1e-2, else |de^2| / e_s; for a stick sqrt(|de^2|);
+//      factor): |de| where e >= 1e-2, else |de^2| / e_s; for a stick 0 (outside the
+//      band below, a rebound would break the |de^2| bound), else sqrt(|de^2|);
 //      relative on 1 - e its own relative bound where gamma <= 1e-2. Never within
 //      |e_s^2| < 1e-8 of the threshold, where its outcome is not verified.
 //   1. a double-precision approximation (eqs. 22, 23, 25, then Prop. 2 with
@@ -376,7 +377,11 @@ class evaluator {
     const fast_cor_value v = m_options.surrogate->at(gd, ggd);
     if (!v.in_domain || !(std::abs(v.e_squared) >= b.uncertain_e_squared)) return std::nullopt;
     const bool stick = v.outcome == impact_outcome::stick;
-    double abs_bound = stick ? std::sqrt(b.abs_e_squared)
+    // NOTE: a stick here has e_s^2 <= -uncertain_e_squared; a true rebound would put
+    // |e_s^2 - e^2| above that, beyond the |de^2| bound when the bound is the smaller:
+    // then the stated bound itself says e = 0 exactly. Else e <= sqrt(|de^2| bound).
+    const double stick_bound = b.abs_e_squared < b.uncertain_e_squared ? 0.0 : std::sqrt(b.abs_e_squared);
+    double abs_bound = stick ? stick_bound
                              : v.e >= 1.01e-2 ? b.abs_e : b.abs_e_squared / v.e;  // |de| = |de^2| / (e_s + e)
     Real bound = detail::as_requested(Real(abs_bound), Real(v.one_minus_e), m_options.relative);
     if (m_options.relative && !stick && gd <= b.small_gamma && v.e >= 1.01e-2 && Real(b.rel_one_minus_e) < bound)
