@@ -13,7 +13,8 @@
 //     largest single timing, an interrupt); stream_mean_ns (the least of 9 passes'
 //     means); taylor_mean_ns and taylor_over_surrogate = taylor_mean_ns / stream_mean_ns.
 //   BM_taylor_double/<law>/<stream>: solve_impact<double> on the stream's first 256
-//     points (mean per point = time / 256; run first, read by BM_surrogate).
+//     points (mean per point = time / 256); counter mean_ns: the least of 3 passes'
+//     means, read by BM_surrogate (so run it first).
 //   BM_gamma_for/<law>: the inverse on 1024 random (e, g) (mean per call = time / 1024).
 // Run: ./build/benchmarks/surrogate_bench (Release, -DVISCOR_BUILD_BENCHMARKS=ON).
 // $VISCOR_SURROGATE_DIR, if set, is searched instead of reference_data/surrogates
@@ -72,7 +73,7 @@ void BM_taylor_double(benchmark::State& state, const std::string& law_name, bool
     for (const auto& p : points) benchmark::DoNotOptimize(viscor::solve_impact<double>(law, p.gamma, p.g).e);
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * points.size()));
   const double mean = viscor::surrogate::stream_mean_ns(
-      [&](double gamma, double g) { return viscor::solve_impact<double>(law, gamma, g).e; }, points, 1);
+      [&](double gamma, double g) { return viscor::solve_impact<double>(law, gamma, g).e; }, points, 3);
   taylor_ns[law_name + (rebound_only ? "/rebound" : "/mixed")] = mean;
   state.counters["mean_ns"] = mean;
 }

@@ -260,7 +260,7 @@ struct bench_command {
         std::vector<surrogate::timing_point> few(points.begin(),
                                                  points.begin() + std::min<std::ptrdiff_t>(taylor_points, static_cast<std::ptrdiff_t>(points.size())));
         const double taylor = surrogate::stream_mean_ns(
-            [&law](double gamma, double g) { return solve_impact<double>(law, gamma, g).e; }, few, 1);
+            [&law](double gamma, double g) { return solve_impact<double>(law, gamma, g).e; }, few, 3);
         const char* stream = rebound_only ? "rebound" : "mixed";
         std::snprintf(buffer, sizeof buffer, "| %s | %zu | %s | %.0f ns | %.0f ns | %.0f ns | %.0f ns | %.3g us | %.0fx |\n",
                       law.name.c_str(), points.size(), stream, t.median_ns, t.p99_ns, t.max_ns, mean, taylor / 1000,
@@ -280,7 +280,7 @@ struct bench_command {
         " passes in shuffled orders; median and p99 over all timings, max = the slowest point's least timing; "
         "mean in a stream = the least of the passes' means without a clock read between calls; "
         "Taylor / surrogate = Taylor mean / surrogate mean in a stream, Taylor on the stream's first " +
-        std::to_string(taylor_points) + " points";
+        std::to_string(taylor_points) + " points (the least of 3 passes' means)";
     text << "\n" << surrogate_points << " fixed-seed random points per law (gamma uniform in [0, gamma_max], g half "
          << "log-uniform in [1e-3, g_max], half uniform in [g_min, 10]); 'mixed' is all of them, 'rebound' the "
          << "rebounds among them. " << method << "; FMA path: " << (surrogate::cpu_has_fma() ? "yes" : "no") << "\n";
