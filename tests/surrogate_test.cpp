@@ -8,6 +8,13 @@
 //   - a perturbed surrogate fails the same check (the check can fail);
 //   - the inverse gamma_for round-trips (e_s(gamma_for(e, g), g) = e) on 2,000
 //     fixed-seed random (e, g), and is NaN where no gamma in the domain fits;
+//   - the 2-D sum by columns (the evaluation's storage) equals the sum by rows to the
+//     last bit, for every compiled order and the generic loop;
+//   - the grid lookup finds the patch the tree walk finds, also on every split;
+//   - a committed file written back from memory is the same file, byte for byte
+//     (the coefficients are transposed on reading and on writing);
+//   - the evaluation's FMA path (x86 with AVX2 + FMA) and its portable path give
+//     bit-identical e, 1 - e, e^2, outcome and inverse;
 //   - viscor::evaluate takes the surrogate where its bound meets the tolerance
 //     (and its value is within that tolerance of an independent Taylor solve in long
 //     double), and falls back outside the domain, near the threshold, or when the
@@ -25,6 +32,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <fstream>
 #include <random>
 #include <sstream>
 
@@ -59,7 +68,74 @@ TEST(Chebyshev, InterpolationIsExactOnPolynomials2D) {
   }
 }
 
+TEST(Chebyshev, SumByColumnsEqualsSumByRowsToTheLastBit) {
+  std::mt19937_64 rng(3);
+  auto u = [&] { return static_cast<double>(rng() >> 11) * 0x1.0p-52 - 1; };
+  for (int n : {6, 8, 10, 12, 14, 16}) {
+    std::vector<double> rows(static_cast<std::size_t>(n * n)), columns(rows.size());
+    for (auto& c : rows) c = u() * std::pow(10.0, -8 * (u() + 1));
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) columns[static_cast<std::size_t>(j * n + i)] = rows[static_cast<std::size_t>(i * n + j)];
+    for (int k = 0; k < 200; ++k) {
+      const double x = u(), y = u();
+      EXPECT_EQ(clenshaw_2d_by_columns(columns.data(), n, x, y), clenshaw_2d(rows.data(), n, x, y)) << n << " " << x << " " << y;
+    }
+  }
+}
+
 class CommittedSurrogate : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(CommittedSurrogate, GridLookupFindsThePatchOfTheTreeWalk) {
+  const auto s = viscor::test::load_committed_surrogate(GetParam());
+  if (!s) GTEST_SKIP() << "no committed surrogate for " << GetParam();
+  std::mt19937_64 rng(17);
+  auto u = [&] { return static_cast<double>(rng() >> 11) * 0x1.0p-53; };
+  for (const patch_tree* t : {&s->low_load, &s->high_load}) {
+    ASSERT_FALSE(t->index.cells.empty());
+    std::vector<std::pair<double, double>> points;
+    for (int k = 0; k < 20000; ++k) points.push_back({t->x0 + (t->x1 - t->x0) * u(), t->y0 + (t->y1 - t->y0) * u()});
+    for (double x : {t->x0, t->x1})
+      for (double y : {t->y0, t->y1}) points.push_back({x, y});
+    for (const auto& n : t->nodes) {  // on every split, and a rounding either side of it
+      if (n.dim == 2) continue;
+      for (double v : {n.split, std::nextafter(n.split, -HUGE_VAL), std::nextafter(n.split, HUGE_VAL)}) {
+        const double other = n.dim == 0 ? t->y0 + (t->y1 - t->y0) * u() : t->x0 + (t->x1 - t->x0) * u();
+        points.push_back(n.dim == 0 ? std::pair{v, other} : std::pair{other, v});
+      }
+    }
+    for (const auto& [x, y] : points) ASSERT_EQ(t->locate(x, y), t->walk(x, y)) << x << " " << y;
+  }
+}
+
+TEST_P(CommittedSurrogate, WritesTheCommittedFileBackByteForByte) {
+  const auto s = viscor::test::load_committed_surrogate(GetParam());
+  if (!s) GTEST_SKIP() << "no committed surrogate for " << GetParam();
+  std::ifstream in(viscor::test::surrogate_path(GetParam()));
+  std::stringstream committed, written;
+  committed << in.rdbuf();
+  write_cor_surrogate(written, *s);
+  EXPECT_TRUE(written.str() == committed.str());
+}
+
+TEST_P(CommittedSurrogate, FmaPathIsBitIdenticalToThePortablePath) {
+  const auto s = viscor::test::load_committed_surrogate(GetParam());
+  if (!s) GTEST_SKIP() << "no committed surrogate for " << GetParam();
+  if (!cpu_has_fma()) GTEST_SKIP() << "one path only here (no AVX2 + FMA, or the build targets FMA)";
+  std::mt19937_64 rng(23);
+  auto u = [&] { return static_cast<double>(rng() >> 11) * 0x1.0p-53; };
+  auto same = [](double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; };
+  for (int k = 0; k < 20000; ++k) {
+    const double gamma = s->gamma_max * u();
+    const double g = k % 2 ? s->g_min + (10 - s->g_min) * u() : std::exp(std::log(1e-3) + (std::log(s->g_max) - std::log(1e-3)) * u());
+    const auto a = (*s)(gamma, g), b = s->evaluate_portable(gamma, g);
+    ASSERT_TRUE(same(a.e, b.e) && same(a.one_minus_e, b.one_minus_e) && same(a.e_squared, b.e_squared) && a.outcome == b.outcome)
+        << "gamma = " << gamma << ", g = " << g;
+    if (k % 10 == 0) {
+      const double e = 0.01 + 0.98999 * u();
+      ASSERT_TRUE(same(s->gamma_for(e, g), s->gamma_for_portable(e, g))) << "e = " << e << ", g = " << g;
+    }
+  }
+}
 
 TEST_P(CommittedSurrogate, FileReadsBackIdentically) {
   const auto s = viscor::test::load_committed_surrogate(GetParam());

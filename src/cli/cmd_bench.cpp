@@ -10,6 +10,12 @@
 // benchmarked + 20) digits, which must first agree with the table to every
 // certified digit: the table anchors the reference, the solve extends it.
 // Relative errors are over the rebounding points (e > 0) only.
+//
+// `viscor bench --surrogate`: per committed surrogate, the time of one evaluation
+// on fixed-seed random points of the domain (median, 99th percentile, slowest point,
+// each evaluation timed alone: surrogate/surrogate_timing.hpp) and the mean in a
+// stream, for all the points (mixed) and for the rebounds only, next to the Taylor
+// solve in double on the same kind of points, in the same run.
 #include "cli_common.hpp"
 #include "command_registry.hpp"
 #include "data_directory.hpp"
@@ -18,6 +24,7 @@
 #include <viscor/scenes/error_map.hpp>
 #include <viscor/scenes/evaluate.hpp>
 #include <viscor/surrogate/surrogate_source.hpp>
+#include <viscor/surrogate/surrogate_timing.hpp>
 #include <viscor/tables/reference_table.hpp>
 
 #include <algorithm>
@@ -117,6 +124,8 @@ struct bench_command {
   std::string table;  // "" -> <data directory>/cor_report_grid.csv
   bool certified = false;
   double min_time = 0.02;
+  bool surrogate_mode = false;
+  int surrogate_points = 16384, surrogate_passes = 9, taylor_points = 256;
 
   std::vector<bench_method> methods(const std::map<std::string, std::shared_ptr<error_map>>& loaded) const {
     std::vector<bench_method> out;
@@ -218,7 +227,77 @@ struct bench_command {
     return out;
   }
 
+  // --surrogate: per-evaluation times of the committed surrogates.
+  void run_surrogate() const {
+    if (surrogate_points < 1) throw invalid_parameter("--points must be >= 1, got " + std::to_string(surrogate_points));
+    if (surrogate_passes < 1) throw invalid_parameter("--passes must be >= 1, got " + std::to_string(surrogate_passes));
+    if (taylor_points < 1) throw invalid_parameter("--taylor-points must be >= 1, got " + std::to_string(taylor_points));
+    std::vector<contact_law> law_list;
+    {
+      std::stringstream in(laws);
+      for (std::string item; std::getline(in, item, ',');) law_list.push_back(law_by_name(item));
+    }
+    std::ostringstream text;
+    text << "| law | points | stream | median | p99 | max (slowest point) | mean in a stream | Taylor double (mean) | "
+            "Taylor / surrogate |\n|---|---|---|---|---|---|---|---|---|\n";
+    json rows = json::array();
+    std::vector<std::string> missing;
+    surrogate::evaluation_times last;
+    char buffer[256];
+    for (const auto& law : law_list) {
+      const surrogate::cor_surrogate* s = find_surrogate(law);
+      if (!s) {
+        missing.push_back(law.name);
+        continue;
+      }
+      const auto all = surrogate::timing_points(*s, static_cast<std::size_t>(surrogate_points));
+      for (const bool rebound_only : {false, true}) {
+        const auto points = rebound_only ? surrogate::points_with_outcome(*s, all, impact_outcome::rebound) : all;
+        if (points.empty()) continue;
+        const auto f = [s](double gamma, double g) { return (*s)(gamma, g).e; };
+        const auto t = surrogate::time_each_evaluation(f, points, surrogate_passes);
+        const double mean = surrogate::stream_mean_ns(f, points, surrogate_passes);
+        std::vector<surrogate::timing_point> few(points.begin(),
+                                                 points.begin() + std::min<std::ptrdiff_t>(taylor_points, static_cast<std::ptrdiff_t>(points.size())));
+        const double taylor = surrogate::stream_mean_ns(
+            [&law](double gamma, double g) { return solve_impact<double>(law, gamma, g).e; }, few, 3);
+        const char* stream = rebound_only ? "rebound" : "mixed";
+        std::snprintf(buffer, sizeof buffer, "| %s | %zu | %s | %.0f ns | %.0f ns | %.0f ns | %.0f ns | %.3g us | %.0fx |\n",
+                      law.name.c_str(), points.size(), stream, t.median_ns, t.p99_ns, t.max_ns, mean, taylor / 1000,
+                      taylor / mean);
+        text << buffer;
+        rows.push_back({{"law", law.name}, {"stream", stream}, {"points", points.size()}, {"median_ns", t.median_ns},
+                        {"p99_ns", t.p99_ns}, {"max_ns", t.max_ns}, {"raw_max_ns", t.raw_max_ns},
+                        {"stream_mean_ns", mean}, {"taylor_double_mean_ns", taylor}, {"taylor_points", few.size()},
+                        {"taylor_over_surrogate", taylor / mean}});
+        last = t;
+      }
+    }
+    const std::string method =
+        "each evaluation timed alone (fenced time-stamp counter, clock step " + std::to_string(last.resolution_ns) +
+        " ns, empty-region overhead " + std::to_string(last.overhead_ns) + " ns subtracted), " +
+        std::to_string(surrogate_passes) +
+        " passes in shuffled orders; median and p99 over all timings, max = the slowest point's least timing; "
+        "mean in a stream = the least of the passes' means without a clock read between calls; "
+        "Taylor / surrogate = Taylor mean / surrogate mean in a stream, Taylor on the stream's first " +
+        std::to_string(taylor_points) + " points (the least of 3 passes' means)";
+    text << "\n" << surrogate_points << " fixed-seed random points per law (gamma uniform in [0, gamma_max], g half "
+         << "log-uniform in [1e-3, g_max], half uniform in [g_min, 10]); 'mixed' is all of them, 'rebound' the "
+         << "rebounds among them. " << method << "; FMA path: " << (surrogate::cpu_has_fma() ? "yes" : "no") << "\n";
+    for (const auto& name : missing) text << "no committed surrogate for " << name << " (skipped)\n";
+    json j;
+    j["command"] = "bench";
+    j["mode"] = "surrogate";
+    j["points_per_law"] = surrogate_points;
+    j["method"] = method;
+    j["fma_path"] = surrogate::cpu_has_fma();
+    j["rows"] = rows;
+    j["skipped_without_surrogate"] = missing;
+    output.emit(text.str(), j);
+  }
+
   void run() const {
+    if (surrogate_mode) return run_surrogate();
     if (!(min_time >= 0)) throw invalid_parameter("--min-time must be >= 0");
     std::vector<contact_law> law_list;
     {
@@ -346,6 +425,12 @@ void setup(CLI::App& app) {
   app.add_option("--table", cmd->table,
                  "certified CoR table holding the point set (default: cor_report_grid.csv of the data directory)");
   app.add_option("--min-time", cmd->min_time, "seconds of repetitions per point and method")->capture_default_str();
+  app.add_flag("--surrogate", cmd->surrogate_mode,
+               "time the committed surrogates per evaluation on random points (median, max, Taylor ratio) instead");
+  app.add_option("--points", cmd->surrogate_points, "--surrogate: random points per law")->capture_default_str();
+  app.add_option("--passes", cmd->surrogate_passes, "--surrogate: timings per point")->capture_default_str();
+  app.add_option("--taylor-points", cmd->taylor_points, "--surrogate: points of each stream solved by Taylor in double")
+      ->capture_default_str();
   app.callback([cmd] { cmd->run(); });
 }
 

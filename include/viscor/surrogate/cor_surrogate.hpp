@@ -12,15 +12,20 @@
 // Then e^2 = 1 - w G (w = gamma or r) and 1 - e = w G / (1 + e) keep the relative
 // digits of 1 - e as gamma -> 0.
 //
-// Evaluation: a walk down a k-d tree of patches and one 2-D Clenshaw sum; no
-// allocation, no multiprecision. The coefficients are data (reference_data/
-// surrogates/<law>.surrogate), read at run time by read_cor_surrogate.
+// Evaluation: a grid lookup of the patch (the k-d tree's walk where the grid cell
+// is split further), one 2-D Clenshaw sum on coefficients stored by columns (vector
+// fused multiply-adds on x86 with AVX2 + FMA, chosen at run time, bit-identical to
+// the portable path); no allocation, no multiprecision. docs/performance.md
+// ("Surrogates") has the cost and the profile behind this layout. The coefficients
+// are data (reference_data/surrogates/<law>.surrogate), read at run time by
+// read_cor_surrogate.
 #pragma once
 
 #include <viscor/core/outcome.hpp>
 #include <viscor/core/exceptions.hpp>
 #include <viscor/surrogate/chebyshev.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -29,12 +34,14 @@
 #include <limits>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace viscor::surrogate {
 
 /// Chebyshev patches on an adaptive k-d tree over the box [x0, x1] x [y0, y1].
-/// Every split halves its cell, so the tree is all a lookup needs.
+/// Every split halves its cell, so the tree is all a lookup needs; build_index adds a
+/// grid that finds most patches without walking the tree.
 struct patch_tree {
   /// A node of the tree: an inner split or a leaf naming its patch.
   struct node {
@@ -46,15 +53,109 @@ struct patch_tree {
   struct patch {
     double cx = 0, sx = 1, cy = 0, sy = 1;  ///< u = (x - cx) * sx, v = (y - cy) * sy in [-1, 1]
   };
+  /// The points the tree sends to one patch: x_lo <= x < x_hi and y_lo <= y < y_hi
+  /// (its ancestors' splits; infinite on the sides where it has none).
+  struct region {
+    double x_lo = -HUGE_VAL, x_hi = HUGE_VAL, y_lo = -HUGE_VAL, y_hi = HUGE_VAL;
+    /// Whether (x, y) is one of them (false for NaN).
+    bool holds(double x, double y) const noexcept { return x >= x_lo && x < x_hi && y >= y_lo && y < y_hi; }
+  };
+  /// A uniform grid over the box: each cell holds the patch that covers it (-1 - p), or
+  /// else the deepest node that does (>= 0), from which the walk goes on. Derived from
+  /// the tree by build_index; empty until then (locate walks the whole tree).
+  struct lookup_grid {
+    int nx = 0, ny = 0;          ///< cells per direction (powers of 2)
+    double sx = 0, sy = 0;       ///< cells per unit of x and of y
+    std::vector<std::int32_t> cells;  ///< cell (kx, ky) at ky * nx + kx
+    std::vector<region> regions;      ///< per patch, to confirm a patch found through the grid
+  };
+
   double x0 = 0, x1 = 1, y0 = 0, y1 = 1;
   int order = 12;  ///< points per direction; coefficients per patch: order^2
   std::vector<node> nodes{node{}};
   std::vector<patch> patches;
-  std::vector<double> coefficients;  ///< patch p: [p * order^2, (p + 1) * order^2)
+  /// Patch p: [p n^2, (p + 1) n^2), n = order, stored by columns: the coefficient of
+  /// T_i(x) T_j(y) at p n^2 + j n + i (clenshaw_2d_by_columns). The fit and the file
+  /// hold them by rows (i n + j); add_patch and read_cor_surrogate transpose.
+  std::vector<double> coefficients;
+  lookup_grid index;  ///< see lookup_grid; rebuild with build_index after changing nodes
 
-  /// The index of the patch that holds (x, y).
-  std::int32_t locate(double x, double y) const noexcept {
-    std::int32_t i = 0;
+  /// Appends patch q with its coefficients by rows (c[i n + j], as
+  /// chebyshev_coefficients_2d gives them); returns its index.
+  std::int32_t add_patch(const patch& q, const double* by_rows) {
+    const std::size_t n = static_cast<std::size_t>(order);
+    patches.push_back(q);
+    const std::size_t first = coefficients.size();
+    coefficients.resize(first + n * n);
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = 0; j < n; ++j) coefficients[first + j * n + i] = by_rows[i * n + j];
+    return static_cast<std::int32_t>(patches.size() - 1);
+  }
+
+  /// The coefficient of T_i(x) T_j(y) in patch p.
+  double coefficient(std::size_t p, int i, int j) const noexcept {
+    const std::size_t n = static_cast<std::size_t>(order);
+    return coefficients[p * n * n + static_cast<std::size_t>(j) * n + static_cast<std::size_t>(i)];
+  }
+
+  /// Builds `index` from the nodes (read_cor_surrogate and the fit call it).
+  void build_index() {
+    index = lookup_grid{};
+    if (patches.empty() || !(x1 > x0) || !(y1 > y0)) return;  // nothing to index: locate walks
+    // Depth of the tree in x and in y, and each patch's region.
+    std::vector<region> regions(patches.size());
+    int depth_x = 0, depth_y = 0;
+    struct visit { std::int32_t node; region r; int dx, dy; };
+    std::vector<visit> todo{{0, region{}, 0, 0}};
+    while (!todo.empty()) {
+      const visit v = todo.back();
+      todo.pop_back();
+      const node& n = nodes[static_cast<std::size_t>(v.node)];
+      if (n.dim == 2) {
+        regions[static_cast<std::size_t>(n.child)] = v.r;
+        depth_x = std::max(depth_x, v.dx), depth_y = std::max(depth_y, v.dy);
+        continue;
+      }
+      visit lower = v, upper = v;
+      lower.node = n.child, upper.node = n.child + 1;
+      if (n.dim == 0) lower.r.x_hi = upper.r.x_lo = n.split, ++lower.dx, ++upper.dx;
+      else lower.r.y_hi = upper.r.y_lo = n.split, ++lower.dy, ++upper.dy;
+      todo.push_back(lower);
+      todo.push_back(upper);
+    }
+    // At most 2^10 cells per direction and 2^16 in all: deeper cells go on walking.
+    depth_x = std::min(depth_x, 10), depth_y = std::min(depth_y, 10);
+    while (depth_x + depth_y > 16) (depth_x > depth_y ? depth_x : depth_y) -= 1;
+    lookup_grid g;
+    g.nx = 1 << depth_x, g.ny = 1 << depth_y;
+    g.sx = g.nx / (x1 - x0), g.sy = g.ny / (y1 - y0);
+    g.cells.resize(static_cast<std::size_t>(g.nx) * static_cast<std::size_t>(g.ny));
+    const double wx = (x1 - x0) / g.nx, wy = (y1 - y0) / g.ny;
+    for (int ky = 0; ky < g.ny; ++ky)
+      for (int kx = 0; kx < g.nx; ++kx) {
+        // The deepest node whose cell holds this one (shrunk by 1e-9 of its width, so
+        // that a split computed with other roundings than the grid's still decides).
+        const double a = x0 + kx * wx + 1e-9 * wx, b = x0 + (kx + 1) * wx - 1e-9 * wx;
+        const double c = y0 + ky * wy + 1e-9 * wy, d = y0 + (ky + 1) * wy - 1e-9 * wy;
+        std::int32_t i = 0;
+        for (;;) {
+          const node& n = nodes[static_cast<std::size_t>(i)];
+          if (n.dim == 2) break;
+          const double lo = n.dim == 0 ? a : c, hi = n.dim == 0 ? b : d;
+          if (lo >= n.split) i = n.child + 1;
+          else if (hi < n.split) i = n.child;
+          else break;
+        }
+        const node& n = nodes[static_cast<std::size_t>(i)];
+        g.cells[static_cast<std::size_t>(ky) * static_cast<std::size_t>(g.nx) + static_cast<std::size_t>(kx)] =
+            n.dim == 2 ? -1 - n.child : i;
+      }
+    g.regions = std::move(regions);
+    index = std::move(g);
+  }
+
+  /// The index of the patch that holds (x, y): the walk down the tree from the root.
+  VISCOR_SURROGATE_INLINE std::int32_t walk(double x, double y, std::int32_t i = 0) const noexcept {
     while (nodes[static_cast<std::size_t>(i)].dim != 2) {
       const node& n = nodes[static_cast<std::size_t>(i)];
       const double v = n.dim == 0 ? x : y;
@@ -63,13 +164,31 @@ struct patch_tree {
     return nodes[static_cast<std::size_t>(i)].child;
   }
 
-  /// The interpolant at (x, y), which must lie in the box.
-  double operator()(double x, double y) const noexcept {
+  /// The index of the patch that holds (x, y), the same as walk(x, y): through the
+  /// grid where it is built, confirmed by the patch's region (a point on a split, or
+  /// a cell index rounded the other way, takes the walk from the root).
+  VISCOR_SURROGATE_INLINE std::int32_t locate(double x, double y) const noexcept {
+    if (index.cells.empty()) return walk(x, y);
+    const double fx = (x - x0) * index.sx, fy = (y - y0) * index.sy;
+    // NOTE: compared as doubles before the conversion (out of range or NaN: no int).
+    const int kx = fx >= 0 ? (fx < index.nx ? static_cast<int>(fx) : index.nx - 1) : 0;
+    const int ky = fy >= 0 ? (fy < index.ny ? static_cast<int>(fy) : index.ny - 1) : 0;
+    const std::int32_t cell = index.cells[static_cast<std::size_t>(ky) * static_cast<std::size_t>(index.nx) + static_cast<std::size_t>(kx)];
+    const std::int32_t p = cell < 0 ? -1 - cell : walk(x, y, cell);
+    return index.regions[static_cast<std::size_t>(p)].holds(x, y) ? p : walk(x, y);
+  }
+
+  /// The interpolant at (x, y), which must lie in the box. WithFma: by the AVX2
+  /// kernels (clenshaw_2d_by_columns), for code compiled for FMA only.
+  template <bool WithFma = false>
+  VISCOR_SURROGATE_INLINE double value(double x, double y) const noexcept {
     const std::int32_t p = locate(x, y);
     const patch& q = patches[static_cast<std::size_t>(p)];
     const double* c = coefficients.data() + static_cast<std::size_t>(p) * static_cast<std::size_t>(order * order);
-    return clenshaw_2d(c, order, (x - q.cx) * q.sx, (y - q.cy) * q.sy);
+    return clenshaw_2d_by_columns<WithFma>(c, order, (x - q.cx) * q.sx, (y - q.cy) * q.sy);
   }
+  /// The interpolant at (x, y), which must lie in the box.
+  double operator()(double x, double y) const noexcept { return value(x, y); }
 };
 
 /// Chebyshev patches on consecutive intervals [breaks[k], breaks[k + 1]].
@@ -78,15 +197,28 @@ struct patch_line {
   std::vector<double> breaks{0, 1};
   std::vector<double> coefficients;  ///< interval k: [k * order, (k + 1) * order)
 
-  /// The interpolant at x, which must lie in [breaks.front(), breaks.back()].
-  double operator()(double x) const noexcept {
-    std::size_t lo = 0, hi = breaks.size() - 2;  // find the interval: few, so bisect
+  /// The index k of the interval that holds x: the number of inner breaks <= x
+  /// (NaN: 0). Few breaks are counted without a branch to mispredict; many, bisected.
+  VISCOR_SURROGATE_INLINE std::size_t interval(double x) const noexcept {
+    const std::size_t inner = breaks.size() - 2;
+    if (inner <= 32) {
+      std::size_t k = 0;
+      for (std::size_t m = 1; m <= inner; ++m) k += x >= breaks[m] ? 1 : 0;
+      return k;
+    }
+    std::size_t lo = 0, hi = inner;
     while (lo < hi) {
       const std::size_t mid = (lo + hi + 1) / 2;
       if (x >= breaks[mid]) lo = mid; else hi = mid - 1;
     }
-    const double a = breaks[lo], b = breaks[lo + 1];
-    return clenshaw(coefficients.data() + lo * static_cast<std::size_t>(order), order, (2 * x - a - b) / (b - a));
+    return lo;
+  }
+
+  /// The interpolant at x, which must lie in [breaks.front(), breaks.back()].
+  VISCOR_SURROGATE_INLINE double operator()(double x) const noexcept {
+    const std::size_t k = interval(x);
+    const double a = breaks[k], b = breaks[k + 1];
+    return clenshaw(coefficients.data() + k * static_cast<std::size_t>(order), order, (2 * x - a - b) / (b - a));
   }
 };
 
@@ -142,32 +274,17 @@ struct cor_surrogate {
   /// gamma_c(g) for g_split <= g <= g_max: the bead sticks for gamma >= gamma_c.
   double critical_gamma(double g) const noexcept { return critical_gamma_at(g, std::log(g)); }
   /// The same, given x = ln g.
-  double critical_gamma_at(double g, double x) const noexcept {
+  VISCOR_SURROGATE_INLINE double critical_gamma_at(double g, double x) const noexcept {
     const double h = std::exp(log_gamma_c(x));
     return threshold_power == 0 ? h : h * std::pow(g, -threshold_power);
   }
 
   /// e, 1 - e and the outcome at (gamma, g); in_domain false (and nothing else set) outside the domain.
   surrogate_value operator()(double gamma, double g) const noexcept {
-    surrogate_value v;
-    if (!in_domain(gamma, g)) return v;  // also rejects NaN
-    v.in_domain = true;
-    double w = gamma, G = 0;
-    if (g <= g_split) {
-      G = low_load(gamma, g);
-    } else {
-      const double x = std::log(g);
-      const double r = gamma / critical_gamma_at(g, x);
-      if (r >= 1) return stick(v, 1 - r);
-      w = r;
-      G = high_load(x, std::sqrt(1 - r));
-    }
-    const double dissipated = w * G;  // 1 - e^2
-    v.e_squared = 1 - dissipated;
-    if (!(v.e_squared > 0)) return stick(v, v.e_squared);
-    v.e = std::sqrt(v.e_squared);
-    v.one_minus_e = dissipated / (1 + v.e);
-    return v;
+#if VISCOR_SURROGATE_FMA_DISPATCH
+    if (cpu_has_fma()) return evaluate_with_fma(gamma, g);
+#endif
+    return evaluate(gamma, g);
   }
 
   /// The inverse for calibration: the gamma in [0, gamma_max] at which e(gamma, g) =
@@ -179,6 +296,53 @@ struct cor_surrogate {
   /// come from the patch restricted to the line of fixed g: one 1-D Chebyshev series
   /// per patch visited, so a Newton step costs a short Clenshaw sum, not a 2-D one.
   double gamma_for(double e_target, double g) const noexcept {
+#if VISCOR_SURROGATE_FMA_DISPATCH
+    if (cpu_has_fma()) return inverse_with_fma(e_target, g);
+#endif
+    return inverse(e_target, g);
+  }
+
+  /// operator() on the portable path (std::fma as compiled for the build's target,
+  /// a libm call on the x86-64 baseline); operator() must give bit-identical results.
+  surrogate_value evaluate_portable(double gamma, double g) const noexcept { return evaluate(gamma, g); }
+  /// gamma_for on the portable path, bit-identical to gamma_for.
+  double gamma_for_portable(double e_target, double g) const noexcept { return inverse(e_target, g); }
+
+ private:
+#if VISCOR_SURROGATE_FMA_DISPATCH
+  VISCOR_SURROGATE_FMA_TARGET surrogate_value evaluate_with_fma(double gamma, double g) const noexcept {
+    return evaluate<true>(gamma, g);
+  }
+  VISCOR_SURROGATE_FMA_TARGET double inverse_with_fma(double e_target, double g) const noexcept {
+    return inverse(e_target, g);
+  }
+#endif
+
+  // WithFma: the 2-D sums by the AVX2 kernels (only in evaluate_with_fma).
+  template <bool WithFma = false>
+  VISCOR_SURROGATE_INLINE surrogate_value evaluate(double gamma, double g) const noexcept {
+    surrogate_value v;
+    if (!in_domain(gamma, g)) return v;  // also rejects NaN
+    v.in_domain = true;
+    double w = gamma, G = 0;
+    if (g <= g_split) {
+      G = low_load.value<WithFma>(gamma, g);
+    } else {
+      const double x = std::log(g);
+      const double r = gamma / critical_gamma_at(g, x);
+      if (r >= 1) return stick(v, 1 - r);
+      w = r;
+      G = high_load.value<WithFma>(x, std::sqrt(1 - r));
+    }
+    const double dissipated = w * G;  // 1 - e^2
+    v.e_squared = 1 - dissipated;
+    if (!(v.e_squared > 0)) return stick(v, v.e_squared);
+    v.e = std::sqrt(v.e_squared);
+    v.one_minus_e = dissipated / (1 + v.e);
+    return v;
+  }
+
+  VISCOR_SURROGATE_INLINE double inverse(double e_target, double g) const noexcept {
     const double nan = std::numeric_limits<double>::quiet_NaN();
     if (!(e_target >= 0.01 && e_target < 1) || !(g >= g_min && g <= g_max)) return nan;
     const double dissipated = (1 - e_target) * (1 + e_target);
@@ -188,16 +352,18 @@ struct cor_surrogate {
     return solve_dissipation(high_load, /*x_free=*/false, x, dissipated, std::min(1.0, gamma_max / gc)) * gc;
   }
 
- private:
   // One patch of a tree restricted to a line of its fixed coordinate: G as a
   // Chebyshev series in t = (z - c) s on [lo, hi] of the free coordinate z.
+  // NOTE: products are added by std::fma, never written a * b + c: GCC contracts
+  // a * b + c into an fma where the target has one (-ffp-contract=fast, its
+  // default), so the FMA path and the portable path would differ in the last bit.
   struct slice {
     std::int32_t patch = -1;
     double c = 0, s = 1, lo = 0, hi = 0;
     int n = 0;
     double a[64] = {};
 
-    void build(const patch_tree& tree, bool x_free, double fixed, double z) noexcept {
+    VISCOR_SURROGATE_INLINE void build(const patch_tree& tree, bool x_free, double fixed, double z) noexcept {
       patch = x_free ? tree.locate(z, fixed) : tree.locate(fixed, z);
       const auto& q = tree.patches[static_cast<std::size_t>(patch)];
       const std::size_t N = static_cast<std::size_t>(tree.order);
@@ -207,68 +373,76 @@ struct cor_surrogate {
       const double u = x_free ? (fixed - q.cy) * q.sy : (fixed - q.cx) * q.sx;
       double T[64];
       T[0] = 1, T[1] = u;
-      for (std::size_t k = 2; k < N; ++k) T[k] = 2 * u * T[k - 1] - T[k - 2];
+      for (std::size_t k = 2; k < N; ++k) T[k] = std::fma(2 * u, T[k - 1], -T[k - 2]);
       for (std::size_t i = 0; i < N; ++i) a[i] = 0;
-      if (x_free) {  // coefficient (i, j): T_i(x) T_j(y); y fixed
+      if (x_free) {  // coefficient (i, j) of T_i(x) T_j(y) at coef[j * N + i]; y fixed
         for (std::size_t i = 0; i < N; ++i)
-          for (std::size_t j = 0; j < N; ++j) a[i] += coef[i * N + j] * T[j];
+          for (std::size_t j = 0; j < N; ++j) a[i] = std::fma(coef[j * N + i], T[j], a[i]);
         c = q.cx, s = q.sx;
       } else {
         for (std::size_t i = 0; i < N; ++i)
-          for (std::size_t j = 0; j < N; ++j) a[j] += coef[i * N + j] * T[i];
+          for (std::size_t j = 0; j < N; ++j) a[j] = std::fma(coef[j * N + i], T[i], a[j]);
         c = q.cy, s = q.sy;
       }
       lo = c - 1 / s, hi = c + 1 / s;
     }
     bool holds(double z) const noexcept { return patch >= 0 && z >= lo && z < hi; }
     // G and dG/dz at z (Clenshaw with its derivative).
-    void value(double z, double& G, double& dG) const noexcept {
+    VISCOR_SURROGATE_INLINE void value(double z, double& G, double& dG) const noexcept {
       const double t = (z - c) * s, two_t = 2 * t;
       double b1 = 0, b2 = 0, d1 = 0, d2 = 0;
       for (int k = n - 1; k >= 1; --k) {
         const double b0 = std::fma(two_t, b1, a[k] - b2);
-        const double d0 = 2 * b1 + two_t * d1 - d2;
+        const double d0 = std::fma(two_t, d1, 2 * b1 - d2);
         b2 = b1, b1 = b0, d2 = d1, d1 = d0;
       }
       G = std::fma(t, b1, a[0] - b2);
-      dG = (b1 + t * d1 - d2) * s;
+      dG = (std::fma(t, d1, b1) - d2) * s;
     }
   };
 
-  // The w in [0, b] with w G(w) = D; the free coordinate is z = w (low loads, x_free) or
-  // z = sqrt(1 - w) (high loads). NaN if b G(b) < D.
-  static double solve_dissipation(const patch_tree& tree, bool x_free, double fixed, double D, double b) noexcept {
+  // f(w) = w G(w) - D on the line of fixed coordinate `fixed`, and df = f'(w); the free
+  // coordinate is z = w (low loads, x_free) or z = sqrt(1 - w) (high loads). `sl` caches
+  // the patch's restriction to the line. (A function, not a lambda: a lambda would not
+  // be compiled for the FMA path of its caller.)
+  VISCOR_SURROGATE_INLINE static double dissipation_residual(const patch_tree& tree, bool x_free, double fixed, double D,
+                                                             slice& sl, double w, double& df) noexcept {
+    const double z = x_free ? w : std::sqrt(1 - w);
+    const double zc = x_free ? std::min(std::max(z, tree.x0), tree.x1) : std::min(std::max(z, tree.y0), tree.y1);
+    if (!sl.holds(zc)) sl.build(tree, x_free, fixed, zc);
+    double G, dGdz;
+    sl.value(z, G, dGdz);
+    const double dGdw = x_free ? dGdz : (z > 0 ? -dGdz / (2 * z) : 0.0);
+    df = std::fma(w, dGdw, G);
+    return std::fma(w, G, -D);
+  }
+
+  // The w in [0, b] with w G(w) = D (dissipation_residual). NaN if b G(b) < D.
+  VISCOR_SURROGATE_INLINE static double solve_dissipation(const patch_tree& tree, bool x_free, double fixed, double D, double b) noexcept {
     constexpr double eps = std::numeric_limits<double>::epsilon();
     slice sl;
-    // f(w) = w G(w) - D and f'(w)
-    auto f = [&](double w, double& df) {
-      const double z = x_free ? w : std::sqrt(1 - w);
-      const double zc = x_free ? std::min(std::max(z, tree.x0), tree.x1) : std::min(std::max(z, tree.y0), tree.y1);
-      if (!sl.holds(zc)) sl.build(tree, x_free, fixed, zc);
-      double G, dGdz;
-      sl.value(z, G, dGdz);
-      const double dGdw = x_free ? dGdz : (z > 0 ? -dGdz / (2 * z) : 0.0);
-      df = G + w * dGdw;
-      return w * G - D;
-    };
     double df = 0;
-    if (f(b, df) < 0) return std::numeric_limits<double>::quiet_NaN();
+    if (dissipation_residual(tree, x_free, fixed, D, sl, b, df) < 0) return std::numeric_limits<double>::quiet_NaN();
     double neg = 0, pos = b;
-    f(0, df);  // df = G(0)
+    dissipation_residual(tree, x_free, fixed, D, sl, 0, df);  // df = G(0)
     double w = std::min(D / df, b);
     for (int i = 0; i < 40; ++i) {
-      const double fw = f(w, df);
+      const double fw = dissipation_residual(tree, x_free, fixed, D, sl, w, df);
       if (fw == 0) return w;
       (fw < 0 ? neg : pos) = w;
       double next = w - fw / df;
+      // NOTE: converged before the safeguard: a step below rounding lands on w, which
+      // was just made a bracket end, and the safeguard would bisect the whole bracket
+      // (seen once the residual w G - D became one exactly rounded fma).
+      if (std::abs(next - w) <= 2 * eps * w) return next;
       if (!(next > neg && next < pos)) next = (neg + pos) / 2;  // safeguard
-      if (std::abs(next - w) <= 2 * eps * w || pos - neg <= 2 * eps * pos) return next;
+      if (pos - neg <= 2 * eps * pos) return next;
       w = next;
     }
     return w;
   }
 
-  static surrogate_value stick(surrogate_value v, double e_squared) noexcept {
+  VISCOR_SURROGATE_INLINE static surrogate_value stick(surrogate_value v, double e_squared) noexcept {
     v.outcome = impact_outcome::stick;
     v.e = 0, v.one_minus_e = 1, v.e_squared = e_squared;
     return v;
@@ -288,7 +462,11 @@ inline void write_tree(std::ostream& out, const std::string& name, const patch_t
       << ' ' << t.patches.size() << '\n';
   for (const auto& n : t.nodes) out << n.dim << ' ' << n.child << ' ' << n.split << '\n';
   for (const auto& p : t.patches) out << p.cx << ' ' << p.sx << ' ' << p.cy << ' ' << p.sy << '\n';
-  write_doubles(out, t.coefficients, static_cast<std::size_t>(t.order));
+  // By rows, a row per line (the file's order; memory holds them by columns).
+  const int n = t.order;
+  for (std::size_t p = 0; p < t.patches.size(); ++p)
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) out << t.coefficient(p, i, j) << (j + 1 == n ? '\n' : ' ');
 }
 
 struct reader {
@@ -325,8 +503,17 @@ inline patch_tree read_tree(reader& r, const std::string& name) {
   for (auto& p : t.patches)
     p.cx = r.next<double>("patch"), p.sx = r.next<double>("patch"), p.cy = r.next<double>("patch"),
     p.sy = r.next<double>("patch");
-  t.coefficients.resize(patches * static_cast<std::size_t>(t.order * t.order));
-  for (auto& c : t.coefficients) c = r.next<double>("coefficient");
+  const std::size_t n = static_cast<std::size_t>(t.order);
+  std::vector<double> by_rows(n * n);  // the file's order, one patch at a time
+  std::vector<patch_tree::patch> maps;
+  maps.swap(t.patches);
+  t.patches.reserve(patches);
+  t.coefficients.reserve(patches * n * n);
+  for (const auto& q : maps) {
+    for (auto& c : by_rows) c = r.next<double>("coefficient");
+    t.add_patch(q, by_rows.data());
+  }
+  t.build_index();
   return t;
 }
 

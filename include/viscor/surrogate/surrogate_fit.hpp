@@ -362,6 +362,7 @@ void fit_tree(patch_tree& tree, Sample sample, const fit_settings& settings, fit
   tree.nodes.assign(1, patch_tree::node{});
   tree.patches.clear();
   tree.coefficients.clear();
+  tree.index = {};
   std::vector<cell> todo{{tree.x0, tree.x1, tree.y0, tree.y1, 0, 0}};
   auto last = std::chrono::steady_clock::now();
   while (!todo.empty()) {
@@ -391,8 +392,7 @@ void fit_tree(patch_tree& tree, Sample sample, const fit_settings& settings, fit
       auto& node = tree.nodes[static_cast<std::size_t>(c.node)];
       node.dim = 2;
       node.child = static_cast<std::int32_t>(tree.patches.size());
-      tree.patches.push_back({cx, 1 / hx, cy, 1 / hy});
-      tree.coefficients.insert(tree.coefficients.end(), coefficients.begin(), coefficients.end());
+      tree.add_patch({cx, 1 / hx, cy, 1 / hy}, coefficients.data());
     } else {
       // Halve along the direction with the larger coefficient tail (the last two degrees).
       double tail_x = 0, tail_y = 0;
@@ -424,6 +424,7 @@ void fit_tree(patch_tree& tree, Sample sample, const fit_settings& settings, fit
       progress(std::to_string(tree.patches.size()) + " patches kept, " + std::to_string(todo.size()) + " to do");
     }
   }
+  tree.build_index();
 }
 
 }  // namespace detail
