@@ -278,7 +278,10 @@ TEST_P(CommittedSurrogate, EvaluateUsesItWhereItsBoundMeetsTheTolerance) {
   }
   // Falls back: outside the domain, tighter than the bound, at a hair from the threshold.
   EXPECT_NE(ev(1.5, 1.0, 1e-10).method, viscor::evaluation_method::surrogate);
-  if (s->bound.abs_e / 2 >= 1e-14) EXPECT_NE(ev(0.05, 1.0, s->bound.abs_e / 2).method, viscor::evaluation_method::surrogate);
+  // (A rebound: a stick's bound is 0, so it meets any tolerance.)
+  const double gamma_rebound = std::min(0.05, 0.5 * s->critical_gamma(1.0));
+  if (s->bound.abs_e / 2 >= 1e-14)
+    EXPECT_NE(ev(gamma_rebound, 1.0, s->bound.abs_e / 2).method, viscor::evaluation_method::surrogate);
   const double g = 50, gamma = s->critical_gamma(g) * (1 - 1e-12);
   EXPECT_NE(ev(gamma, g, 1e-4).method, viscor::evaluation_method::surrogate);
   // A surrogate of another law is refused.

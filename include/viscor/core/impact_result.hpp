@@ -35,7 +35,8 @@ struct impact_result {
   impact_outcome outcome = impact_outcome::rebound;
   /// T_f for a rebound; for a stick, the time u' vanishes again with u > 0 (the
   /// bead stops separating), +infinity if it creeps to rest without turning back;
-  /// NaN (unknown) when undecided.
+  /// NaN (unknown) when undecided, or for a stick whose turn back is below the
+  /// precision (the adaptive method, energy proven negative).
   Real contact_time = 0;
   Real max_compression = 0;          ///< u_max
   /// For a stick, the overlap where the bead stops separating: u at contact_time,
