@@ -29,7 +29,7 @@ TEST(CliDem, DeckFieldsReproduceTheTarget) {
     ASSERT_EQ(r.status, 0) << r.err;
     const auto j = nlohmann::json::parse(r.out);
     for (const char* field : {"youngs_modulus", "damping", "poisson_ratio"}) ASSERT_TRUE(j["deck"][field].is_string());
-    const auto& m = viscor::dem::find_dem_model(j["code"], j["damping"]);
+    const auto& m = viscor::dem::find_dem_model(j["code"], j["damping_model"]);
     viscor::dem::dem_impact<double> impact;
     impact.bead = {2e11, 0.3, 1e-3, 7800}, impact.v0 = 0.01, impact.gravity = 9.81;
     const double deck = std::stod(j["deck"]["damping"].get<std::string>());

@@ -8,6 +8,7 @@
 #include <viscor/dem/dem_calibration.hpp>
 #include <viscor/dem/deck_snippet.hpp>
 
+#include <chrono>
 #include <sstream>
 #include <vector>
 
@@ -33,6 +34,21 @@ struct dem_command {
 
   void require(const std::string& value, const char* option, const char* what) const {
     if (value.empty()) throw invalid_parameter(std::string("dem needs ") + option + " (" + what + ")");
+  }
+
+  // The inputs echoed under `physical`, with the names of their options, as given.
+  json physical_inputs(bool linear) const {
+    json p;
+    if (linear)
+      p["k"] = stiffness;
+    else
+      p["youngs_modulus"] = youngs_modulus, p["poisson_ratio"] = poisson_ratio;
+    p["radius"] = radius;
+    p["density"] = density;
+    if (!v0.empty()) p["v0"] = v0;
+    p["gravity"] = gravity;
+    p["force"] = force;
+    return p;
   }
 
   void run() const {
@@ -84,29 +100,22 @@ struct dem_command {
       impact.kind = kind;
       impact.gravity = parse_real<Real>(gravity, "gravity");
       impact.force = parse_real<Real>(force, "force");
+      const auto start = std::chrono::steady_clock::now();
       json j;
       j["command"] = "dem";
       j["code"] = code;
-      j["damping"] = damping;
+      j["damping_model"] = damping;
       j["contact"] = contact;
       j["law"] = law_json(dem::law_of(model));
       j["clamped"] = model.clamped;  // the code sets a pulling normal force to zero
       j["version"] = std::string(model.version);
-      j["source"] = std::string(model.source);
-      if (linear)
-        j["material"] = {{"radius", radius}, {"density", density}};
-      else
-        j["material"] = {{"youngs_modulus", youngs_modulus},
-                         {"poisson_ratio", poisson_ratio},
-                         {"radius", radius},
-                         {"density", density}};
-      j["gravity"] = gravity;
-      j["force"] = force;
+      j["code_source"] = std::string(model.source);
+      j["physical"] = physical_inputs(linear);  // as given, named as the options (docs/json-schema.md)
       const dem::hertz_contact<Real> c = dem::model_contact(model, impact);
       if (!linear) j["effective_modulus_pa"] = number(c.effective_modulus);
       j["effective_radius_m"] = number(c.effective_radius);
       j["effective_mass_kg"] = number(c.effective_mass);
-      j["stiffness"] = number(c.stiffness);
+      j["k"] = number(c.stiffness);
       std::ostringstream text;
       text << "code        " << model.version << "\n"
            << "model       " << code << " damping " << damping << " on a " << contact << " (viscor law "
@@ -121,6 +130,8 @@ struct dem_command {
         run_reverse<Real>(model, impact, j, text);
       else
         run_forward<Real>(model, impact, j, text);
+      j["precision"] = scalar_json<Real>();
+      j["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       output.emit(text.str(), j);
     });
   }
@@ -152,7 +163,6 @@ struct dem_command {
     deck["damping_kind"] = model.deck_kind == dem::deck_damping_kind::coefficient ? "coefficient"
                                                                                    : "coefficient_of_restitution";
     j["target_e"] = target_e;
-    j["v0"] = v0;
     j["deck"] = deck;
     j["damping_number"] = number(d.damping_number);
     j["gamma0"] = number(d.gamma0);
