@@ -237,6 +237,22 @@ TEST(SolveImpact, ExtremesGiveFiniteResults) {
       }
 }
 
+TEST(SolveImpact, AtRestWithoutATrapIsAStickAtAnUnknownTime) {
+  // Linear law, gamma = 1.9999, g = 0.5 (just under-damped): the bead sticks and
+  // turns back at tau ~ 316 (closed form), when its motion about u_eq is ~e^-300
+  // below double's precision. No trapping sector exists (gamma < 2), so the Taylor
+  // solver finds it at rest: a stick, but it cannot say when it stops, and must not
+  // claim the +inf of a creep (it did; certify left it uncertified, `cor` printed inf).
+  const auto exact = exact_linear(1.9999, 0.5);
+  ASSERT_EQ(exact.outcome, impact_outcome::stick);
+  ASSERT_TRUE(exact.contact_time && *exact.contact_time > 300 && std::isfinite(*exact.contact_time));
+  const auto r = solve_impact<double>(law_by_name("linear"), 1.9999, 0.5);
+  ASSERT_EQ(r.outcome, impact_outcome::stick);
+  EXPECT_EQ(r.e, 0);
+  EXPECT_FALSE(std::isinf(r.contact_time)) << r.contact_time;
+  if (!std::isnan(r.contact_time)) EXPECT_NEAR(r.contact_time, *exact.contact_time, 1e-6 * *exact.contact_time);
+}
+
 TEST(SolveImpact, StrongDampingCreepsToRest) {
   // Linear law, gamma >= 2, g = 0: overdamped, u and u' reach 0 only asymptotically.
   const auto r = solve_impact<double>(law_by_name("linear"), 1e3, 0.0);

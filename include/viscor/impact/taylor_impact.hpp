@@ -48,8 +48,10 @@
 //   creeps to u_eq.
 // * at_rest, g > 0: the state equals u_eq up to rounding: the turn, if any, is
 //   below the working precision.
-// All three report contact_time = +infinity; stop_overlap is the turning point
-// u_s, or the rest position u_eq (0 for g = 0).
+// The two creeps report contact_time = +infinity (proven: the bead never turns);
+// at_rest reports NaN (the bead may still turn back, later than the precision can
+// follow: linear law, gamma = 1.9999, g = 0.5 turns at tau = 316). stop_overlap is
+// the turning point u_s, or the rest position u_eq (0 for g = 0).
 //
 // The GBS solver (adaptive_impact.hpp) makes its own exit, barrier and energy
 // arguments on purpose: the two solvers share no phase code (a shared proof
@@ -188,11 +190,14 @@ class taylor_impact_solver {
       case time_outcome::turns_back:
         stick(result, around.state, around.state.tau, around.state.u, true);
         return finish(result);
-      case time_outcome::rests:
+      case time_outcome::rests: {
         // NOTE: at rest after maximal compression the energy check of a turn applies: E = P(u_eq) < 0.
-        stick(result, around.state, std::numeric_limits<Real>::infinity(), m_u_eq,
-              around.proof == sticking_proof::at_rest && around.past_max_compression);
+        const bool at_rest = around.proof == sticking_proof::at_rest;
+        stick(result, around.state,
+              at_rest ? std::numeric_limits<Real>::quiet_NaN() : std::numeric_limits<Real>::infinity(), m_u_eq,
+              at_rest && around.past_max_compression);
         return finish(result);
+      }
       case time_outcome::leaves:
       case time_outcome::spirals:
         break;
