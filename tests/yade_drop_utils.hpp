@@ -13,6 +13,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -171,6 +172,34 @@ inline bool run_drops(const std::string& yade, std::vector<drop_case>& cases, st
   }
   fs::remove_all(dir);
   return true;
+}
+
+/// What halving dt must do to a drop's miss: `shrinks` (the Mindlin checks), or
+/// `first_order`: it halves, and the extrapolation 2 e(dt/2) - e(dt) removes it to
+/// yade_viscel_extrapolated_tolerance (the visco-elastic law's checks).
+enum class halving { shrinks, first_order };
+
+/// The same drop at dt (`coarse`) and dt/2 (`fine`): both ran and left the clamp
+/// force-free, the miss at dt is within `tolerance` and behaves under halving as
+/// `order` says. Prints the misses (the figures docs/dem.md quotes).
+inline void check_halving(const drop_case& coarse, const drop_case& fine, double tolerance, halving order) {
+  SCOPED_TRACE(coarse.name);
+  ASSERT_TRUE(coarse.ok && fine.ok);
+  EXPECT_TRUE(coarse.force_free && fine.force_free);  // the clamp released the bead before zero overlap
+  const double miss = coarse.e - coarse.expected_e, fine_miss = fine.e - fine.expected_e;
+  EXPECT_LE(std::abs(miss), tolerance) << "e = " << coarse.e;
+  if (order == halving::shrinks) {
+    EXPECT_LT(std::abs(fine_miss), std::abs(miss)) << "halving dt: e = " << fine.e;
+    std::printf("[yade] %s: expected %.10f, e = %.10f (miss %.2e), at dt/2 e = %.10f (miss %.2e)\n",
+                coarse.name.c_str(), coarse.expected_e, coarse.e, miss, fine.e, fine_miss);
+    return;
+  }
+  EXPECT_NEAR(miss / fine_miss, 2.0, 0.1) << "halving dt: e = " << fine.e;
+  const double extrapolated = 2 * fine.e - coarse.e;
+  EXPECT_NEAR(extrapolated, coarse.expected_e, yade_viscel_extrapolated_tolerance);
+  std::printf("[yade] %s: expected %.8f, e = %.10f (miss %.2e), at dt/2 e = %.10f (miss %.2e), "
+              "extrapolated miss %.1e\n", coarse.name.c_str(), coarse.expected_e, coarse.e, miss, fine.e, fine_miss,
+              extrapolated - coarse.expected_e);
 }
 
 }  // namespace viscor::test::yade_drop
