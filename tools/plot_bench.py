@@ -17,7 +17,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-MARKERS = {"approx": ("s", "C1"), "taylor": ("o", "C0"), "certify": ("D", "C3"), "evaluate": ("^", "C2")}
+MARKERS = {"approx": ("s", "C1"), "surrogate": ("*", "C4"), "taylor": ("o", "C0"), "certify": ("D", "C3"),
+           "evaluate": ("^", "C2")}
 
 
 def main(source, target):
