@@ -3,11 +3,17 @@
 //   viscor table merge A.csv B.csv ... -o OUT.csv
 //   viscor table sticking SPEC.json -o OUT.csv [--resume] [--shard i/N] [--threads N] [--quiet]
 // Rows come from compute_row / compute_threshold_row (table_row.hpp,
-// sticking_threshold.hpp); files, threads, progress and resume from table_runner.hpp.
+// sticking_threshold.hpp), and for method "proven" also from viscor::enclose
+// (proven_rows.hpp); files, threads, progress and resume from table_runner.hpp.
 #include "cli_common.hpp"
 #include "command_registry.hpp"
+#include "proven_table.hpp"
 #include "spec_json.hpp"
 #include "table_runner.hpp"
+
+#if VISCOR_HAS_ARB
+#include "proven_rows.hpp"
+#endif
 
 #include <viscor/config.hpp>
 #include <viscor/tables/grid_spec.hpp>
@@ -34,9 +40,17 @@ json scalar_provenance(int digits) {
   });
 }
 
-json method_provenance(const grid_spec& spec) {
+/// The digits a row of method "proven" is proven at: those of the working type the
+/// row is certified in (the spec's digits, or more: float128 carries 33 at 30), so
+/// that the proof's cap on proven digits is never below the certificate's arithmetic.
+int proof_digits(int digits) {
+  return std::max(digits, with_working_precision(digits, []<class Real>() { return decimal_digits<Real>(); }));
+}
+
+json method_provenance(const table_spec& table) {
+  const grid_spec& spec = table.grid;
   json j;
-  j["requested"] = to_string(spec.method);
+  j["requested"] = table.proven ? std::string("proven") : to_string(spec.method);
   j["exact"] = describe(row_source::exact);
   j["certified"] = describe(row_source::certified);
   j["tolerances"] =
@@ -55,6 +69,17 @@ json method_provenance(const grid_spec& spec) {
         {"digits", "the least agreement of both working-precision runs with the reference over e, 1 - e, T_f and "
                    "u_max, minus the safety margin"}};
   }
+  if (table.proven)
+    j["proof"] = {
+        {"what", "viscor::enclose (include/viscor/enclose/, docs/proofs.md) on the exact decimal gamma and g of each "
+                 "certified row: validated Taylor integration in Arb ball arithmetic"},
+        {"digits", proof_digits(spec.digits)},
+        {"ball_bits", "ceil(digits log2 10) + 64"},
+        {"columns", "e_lower <= e <= e_upper and one_minus_e_lower <= 1 - e <= one_minus_e_upper (decimals rounded "
+                    "outwards); proven_digits: the correctly rounded digits of e on which both bounds agree (at most "
+                    "digits); outcome_proven: rebound, stick, or undecided (empty bounds, 0 digits)"},
+        {"checks", "a proof that contradicts its certified row (outcome, or e or 1 - e outside the enclosure by more "
+                   "than a unit of the last certified digit) stops the run"}};
   return j;
 }
 
@@ -82,9 +107,11 @@ struct run_options {
     return shard_text.empty() ? shard{} : shard::parse(shard_text);
   }
 
-  table_job job(table_kind kind, const grid_spec& spec, shard part, std::int64_t rows_total) const {
+  table_job job(table_kind kind, const table_spec& table, shard part, std::int64_t rows_total) const {
+    const grid_spec& spec = table.grid;
     table_job j;
     j.kind = kind;
+    j.proven = table.proven;
     j.output = output;
     j.resume = resume;
     j.threads = threads;
@@ -93,21 +120,36 @@ struct run_options {
     p["viscor_version"] = VISCOR_VERSION;
     p["git_commit"] = git_commit();
     p["kind"] = kind == table_kind::cor ? "cor" : "sticking";
-    p["columns"] = table_header(kind);
+    p["columns"] = table_format{kind, table.proven}.header();
     p["rows_total"] = rows_total;
     p["shard"] = part.whole() ? json(nullptr) : json{{"index", part.index}, {"count", part.count}};
     p["spec_file"] = spec_path;
-    p["spec"] = spec_to_json(spec);
+    p["spec"] = spec_to_json(table);  // method "proven" in it: a proven and a certified run never mix
     p["scalar"] = scalar_provenance(spec.digits);
-    p["method"] = method_provenance(spec);
+    p["method"] = method_provenance(table);
     return j;
   }
 };
 
+/// Method "proven": refuses (exit 2), before any work, a build without Arb, too
+/// few digits for a proof, or a law with an exponent that is not rational.
+void require_proof(const table_spec& table) {
+#if !VISCOR_HAS_ARB
+  throw invalid_parameter(table.method_where + ": field method: \"proven\" needs a viscor built with Arb "
+                          "(apt-get install libflint-arb-dev)");
+#endif
+  const grid_spec& spec = table.grid;
+  if (spec.digits < 5)
+    throw parse_error(spec.source + ": field digits: method \"proven\" needs at least 5 digits, got " +
+                      std::to_string(spec.digits));
+  for (const auto& law : spec.laws) require_provable(law, spec.source + ": field laws: " + law.describe());
+}
+
 // ---- viscor table SPEC.json ----
 void run_table(const run_options& options) {
   const shard part = options.check("viscor table");
-  const grid_spec spec = read_spec_json(options.spec_path);
+  const table_spec table = read_spec_json(options.spec_path);
+  const grid_spec& spec = table.grid;
   if (spec.threshold_digits > 0)
     throw parse_error(options.spec_path + ": field threshold_digits: this is a sticking-threshold spec; run it with "
                       "'viscor table sticking'");
@@ -118,17 +160,30 @@ void run_table(const run_options& options) {
     require_computable(p.law, p.gamma == "0", p.g == "0", spec.method,
                        options.spec_path + ": row " + std::to_string(p.index) + " (" + p.law.describe() +
                            ", gamma = " + p.gamma + ", g = " + p.g + ")");
-  table_job job = options.job(table_kind::cor, spec, part, grid_size(spec, axes));
+  if (table.proven) require_proof(table);
+  table_job job = options.job(table_kind::cor, table, part, grid_size(spec, axes));
   for (const auto& p : *points) job.indices.push_back(p.index);
   const table_settings settings = table_settings::from(spec);
   job.compute_line = [points, settings](std::size_t i) { return csv_line(compute_row((*points)[i], settings)); };
+#if VISCOR_HAS_ARB
+  if (table.proven)
+    job.compute_line = [points, settings, digits = proof_digits(spec.digits)](std::size_t i) {
+      const grid_point& p = (*points)[i];
+      const table_row row = compute_row(p, settings);
+      return csv_line(row) + proven_fields(p, digits, row);
+    };
+#endif
   run_table_job(job);
 }
 
 // ---- viscor table sticking SPEC.json ----
 void run_sticking(const run_options& options) {
   const shard part = options.check("viscor table sticking");
-  const grid_spec spec = read_spec_json(options.spec_path);
+  const table_spec table = read_spec_json(options.spec_path);
+  const grid_spec& spec = table.grid;
+  if (table.proven)
+    throw parse_error(table.method_where + ": field method: \"proven\" is a method of CoR tables (viscor table); "
+                      "sticking thresholds are certified (\"auto\", \"certify\" or \"exact\")");
   if (spec.threshold_digits < 1)
     throw parse_error(options.spec_path + ": field threshold_digits: missing: a sticking-threshold spec gives the "
                       "digits wanted, e.g. \"threshold_digits\": 30");
@@ -144,7 +199,7 @@ void run_sticking(const run_options& options) {
     require_computable(p.law, false, !for_g && p.fixed == "0", spec.method,
                        options.spec_path + ": row " + std::to_string(p.index) + " (" + p.law.describe() +
                            (for_g ? ", gamma = " : ", g = ") + p.fixed + ")");
-  table_job job = options.job(table_kind::sticking, spec, part, rows_total);
+  table_job job = options.job(table_kind::sticking, table, part, rows_total);
   for (const auto& p : *points) job.indices.push_back(p.index);
   job.provenance["threshold"] = {
       {"solve_for", to_string(spec.solve_for)},
@@ -172,6 +227,7 @@ void run_merge(const merge_options& options) {
   if (options.output.empty()) throw invalid_parameter("viscor table merge needs an output file: -o OUT.csv");
   struct input {
     std::string path;
+    table_format format;
     csv_table table;
     json sidecar;
   };
@@ -179,7 +235,8 @@ void run_merge(const merge_options& options) {
   for (const auto& path : options.inputs) {
     if (std::filesystem::exists(path + ".partial"))
       throw error("'" + path + "' is unfinished ('" + path + ".partial' exists): complete it with --resume first");
-    input in{path, read_table(path), json()};
+    const table_format format = table_format::of_file(path);
+    input in{path, format, format.read(path), json()};
     if (!std::filesystem::exists(path + ".json"))
       throw error("'" + path + ".json' (the sidecar of '" + path +
                   "') is missing: merge needs it to check that the shards come from the same spec and version");
@@ -198,7 +255,7 @@ void run_merge(const merge_options& options) {
   const json reference = common(inputs.front().sidecar);
   const std::int64_t rows_total = reference.value("rows_total", std::int64_t(-1));
   for (const auto& in : inputs) {
-    if (in.table.kind != inputs.front().table.kind)
+    if (in.table.kind != inputs.front().table.kind || in.format.proven != inputs.front().format.proven)
       throw parse_error(in.path + ":1: wrong columns: the tables to merge must be of one kind");
     if (common(in.sidecar) != reference)
       throw error("cannot merge '" + in.path + "' with '" + inputs.front().path +
@@ -233,7 +290,8 @@ void run_merge(const merge_options& options) {
                 std::to_string(rows_total) + " rows; row " + std::to_string(missing) +
                 " is missing (a shard not given, or not finished?)");
   }
-  const std::string text = table_text(inputs.front().table.kind, rows, options.output);
+  const table_format& format = inputs.front().format;
+  const std::string text = format.text(rows, options.output);
 
   json sidecar = inputs.front().sidecar;
   double wall_total = 0;
@@ -254,8 +312,9 @@ void run_merge(const merge_options& options) {
   sidecar["rows"] = rows.size();
   sidecar["shard"] = nullptr;
   std::size_t exact_rows = 0;
-  for (const auto& row : rows) exact_rows += row.fields.back() == "exact";
+  for (const auto& row : rows) exact_rows += row.fields[format.method_column()] == "exact";
   sidecar["rows_by_method"] = {{"exact", exact_rows}, {"certified", rows.size() - exact_rows}};
+  if (format.proven) sidecar["proofs"] = proof_summary(rows);
   sidecar["command_line"] = detail::command_line();
   sidecar["host"] = detail::host_name();
   sidecar["date"] = detail::iso_time_utc(std::time(nullptr));

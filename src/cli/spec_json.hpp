@@ -6,6 +6,10 @@
 // SAX interface of nlohmann-json hands over the text of every floating-point
 // number, so "gamma": 0.1 is the exact decimal 0.1. Lines are tracked with a
 // counting iterator under the parser (nlohmann 3.11 keeps no positions).
+//
+// "method": "proven" is a method of the CLI only (certified rows plus the columns
+// of a proof, src/cli/proven_table.hpp): include/viscor/tables/ may not depend on
+// the proofs, so grid_spec holds method certify and table_spec says "proven".
 #pragma once
 
 #include "cli_common.hpp"
@@ -193,14 +197,26 @@ class node_reader {
   std::string m_file;
 };
 
-/// Interprets the tree as a grid_spec.
+}  // namespace detail
+
+/// A table spec as the CLI reads it: the grid, and whether its method is "proven".
+struct table_spec {
+  grid_spec grid;       ///< with method certify when `proven`
+  bool proven = false;  ///< "method": "proven": each row certified, then proven (proven_table.hpp)
+  std::string method_where;  ///< where "method" was given ("spec.json:7"), for errors
+};
+
+namespace detail {
+
+/// Interprets the tree as a table_spec.
 class spec_reader : public node_reader {
  public:
   using node_reader::node_reader;
 
-  grid_spec read(const spec_node& root) {
+  table_spec read(const spec_node& root) {
+    table_spec result;
+    grid_spec& spec = result.grid;
     if (root.kind != spec_node::type::object) fail(root, "spec", "the spec must be a JSON object");
-    grid_spec spec;
     spec.source = m_file;
     bool have_laws = false;
     for (std::size_t i = 0; i < root.members.size(); ++i) {
@@ -219,10 +235,12 @@ class spec_reader : public node_reader {
         spec.digits = integer(node, key, 1, max_working_digits);
       } else if (key == "method") {
         const std::string m = string(node, key);
+        result.method_where = m_file + ":" + std::to_string(node.line);
+        result.proven = m == "proven";
         if (m == "auto") spec.method = row_method::automatic;
         else if (m == "exact") spec.method = row_method::exact;
-        else if (m == "certify") spec.method = row_method::certify;
-        else fail(node, key, "must be \"auto\", \"exact\" or \"certify\", got \"" + m + "\"");
+        else if (m == "certify" || m == "proven") spec.method = row_method::certify;
+        else fail(node, key, "must be \"auto\", \"exact\", \"certify\" or \"proven\", got \"" + m + "\"");
       } else if (key == "min_digits") {
         spec.min_digits = integer(node, key, 0, max_working_digits);
       } else if (key == "solve_for") {
@@ -241,7 +259,7 @@ class spec_reader : public node_reader {
     if (!have_laws) fail(root, "laws", "missing: list the contact laws, e.g. \"laws\": [\"linear\", \"tsuji\"]");
     validate(spec);  // digits, min_digits, laws
     expand(spec);    // every axis error (bad numbers, gamma < 0, non-terminating steps) before any work
-    return spec;
+    return result;
   }
 
  private:
@@ -362,7 +380,7 @@ class spec_reader : public node_reader {
 }  // namespace detail
 
 /// Parses spec JSON text; `file` names it in errors. Throws viscor::parse_error.
-inline grid_spec parse_spec_json(const std::string& text, const std::string& file) {
+inline table_spec parse_spec_json(const std::string& text, const std::string& file) {
   const char* furthest = text.data();
   detail::counting_iterator first{text.data(), &furthest}, last{text.data() + text.size(), &furthest};
   detail::spec_builder builder(text, file, &furthest);
@@ -371,7 +389,7 @@ inline grid_spec parse_spec_json(const std::string& text, const std::string& fil
 }
 
 /// Reads a spec file. Throws viscor::error if it cannot be read, parse_error if malformed.
-inline grid_spec read_spec_json(const std::string& path) {
+inline table_spec read_spec_json(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw error("cannot read spec file '" + path + "'");
   std::stringstream s;
@@ -381,7 +399,8 @@ inline grid_spec read_spec_json(const std::string& path) {
 
 /// The spec as normalised JSON: what resume and merge compare, and what the
 /// sidecar records (source positions and formatting are left out).
-inline json spec_to_json(const grid_spec& spec) {
+inline json spec_to_json(const table_spec& table) {
+  const grid_spec& spec = table.grid;
   json j;
   if (!spec.description.empty()) j["description"] = spec.description;
   j["laws"] = json::array();
@@ -406,7 +425,7 @@ inline json spec_to_json(const grid_spec& spec) {
   if (!spec.gamma.empty()) j["gamma"] = axis_json(spec.gamma);
   if (!spec.g.empty()) j["g"] = axis_json(spec.g);
   j["digits"] = spec.digits;
-  j["method"] = to_string(spec.method);
+  j["method"] = table.proven ? std::string("proven") : to_string(spec.method);
   j["min_digits"] = spec.min_digits;
   if (spec.threshold_digits > 0) {
     j["solve_for"] = to_string(spec.solve_for);

@@ -8,6 +8,7 @@
 #pragma once
 
 #include "cli_common.hpp"
+#include "proven_table.hpp"
 #include "test_hooks.hpp"
 
 #include <viscor/config.hpp>
@@ -43,6 +44,8 @@ namespace viscor::cli {
 /// What to compute and where to put it.
 struct table_job {
   table_kind kind = table_kind::cor;
+  /// The rows carry the proof's columns (method "proven", proven_table.hpp); compute_line adds them.
+  bool proven = false;
   std::string output;                   ///< OUT.csv
   std::vector<std::int64_t> indices;    ///< grid indices of the rows of this run (its shard), ascending
   std::function<std::string(std::size_t)> compute_line;  ///< CSV line of row indices[i] (thread-safe)
@@ -250,6 +253,7 @@ inline void run_table_job(const table_job& job) {
   const std::time_t started = std::time(nullptr);
   const std::set<std::int64_t> wanted(job.indices.begin(), job.indices.end());
   const json fingerprint = table_fingerprint(job.provenance);
+  const table_format format{job.kind, job.proven};
 
   // Rows already done by an interrupted run.
   std::set<std::int64_t> done;
@@ -266,7 +270,7 @@ inline void run_table_job(const table_job& job) {
     if (meta.value("fingerprint", json()) != fingerprint)
       throw error("cannot resume: '" + partial + "' was made from a different spec, shard or viscor version "
                   "(see '" + partial_meta + "'); delete both files to start afresh");
-    const csv_table table = read_table(partial, /*allow_truncated_tail=*/true);
+    const csv_table table = format.read(partial, /*allow_truncated_tail=*/true);
     if (table.kind != job.kind) throw parse_error(partial + ":1: wrong columns for this kind of table");
     for (const auto& row : table.rows) {
       if (!wanted.count(row.index))
@@ -278,7 +282,7 @@ inline void run_table_job(const table_job& job) {
       earlier.push_back(row);
     }
     // Rewrite without a line cut short by a kill, so appends start on a fresh line.
-    std::string clean = table_header(job.kind) + "\n";
+    std::string clean = format.header() + "\n";
     for (const auto& row : earlier) clean += row.text + "\n";
     output_options::write_atomically(partial, clean);
     if (!job.quiet)
@@ -290,7 +294,7 @@ inline void run_table_job(const table_job& job) {
       bool complete = false;
       try {
         complete = table_fingerprint(detail::read_json_file(job.output + ".json")) == fingerprint &&
-                   read_table(job.output).rows.size() == job.indices.size();
+                   format.read(job.output).rows.size() == job.indices.size();
       } catch (const error&) {
         complete = false;  // unreadable: compute it again
       }
@@ -303,7 +307,7 @@ inline void run_table_job(const table_job& job) {
     meta["fingerprint"] = fingerprint;
     meta["note"] = "an interrupted viscor table run: rerun the same command with --resume";
     output_options::write_atomically(partial_meta, meta.dump(2) + "\n");
-    output_options::write_atomically(partial, table_header(job.kind) + "\n");
+    output_options::write_atomically(partial, format.header() + "\n");
   }
   const double earlier_wall = meta.value("wall_time_seconds", 0.0);
   const int earlier_sessions = meta.value("sessions", 0);
@@ -390,13 +394,13 @@ inline void run_table_job(const table_job& job) {
   }
 
   // All rows done: sort into grid order and publish CSV, then sidecar.
-  const csv_table table = read_table(partial);
-  const std::string text = table_text(job.kind, table.rows, partial);
+  const csv_table table = format.read(partial);
+  const std::string text = format.text(table.rows, partial);
   if (table.rows.size() != job.indices.size())
     throw error("internal error: '" + partial + "' holds " + std::to_string(table.rows.size()) + " rows, expected " +
                 std::to_string(job.indices.size()));
   std::size_t exact_rows = 0, certified_rows = 0;
-  for (const auto& row : table.rows) (row.fields.back() == "exact" ? exact_rows : certified_rows)++;
+  for (const auto& row : table.rows) (row.fields[format.method_column()] == "exact" ? exact_rows : certified_rows)++;
 
   const double wall = duration<double>(steady_clock::now() - wall_start).count();
   json sidecar;
@@ -404,6 +408,7 @@ inline void run_table_job(const table_job& job) {
   for (auto it = job.provenance.begin(); it != job.provenance.end(); ++it) sidecar[it.key()] = it.value();
   sidecar["rows"] = table.rows.size();
   sidecar["rows_by_method"] = {{"exact", exact_rows}, {"certified", certified_rows}};
+  if (format.proven) sidecar["proofs"] = proof_summary(table.rows);
   sidecar["command_line"] = detail::command_line();
   sidecar["host"] = detail::host_name();
   sidecar["date"] = detail::iso_time_utc(started);

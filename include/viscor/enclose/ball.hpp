@@ -196,12 +196,21 @@ class ball {
     arb_div(r.m, x.m, y.m, ball_bits());
     return r;
   }
-  /// *this = *this + y.
-  ball& operator+=(const ball& y) { return *this = *this + y; }
+  /// *this = *this + y (in place: Arb allows the output to alias an input).
+  ball& operator+=(const ball& y) {
+    arb_add(m, m, y.m, ball_bits());
+    return *this;
+  }
   /// *this = *this - y.
-  ball& operator-=(const ball& y) { return *this = *this - y; }
+  ball& operator-=(const ball& y) {
+    arb_sub(m, m, y.m, ball_bits());
+    return *this;
+  }
   /// *this = *this * y.
-  ball& operator*=(const ball& y) { return *this = *this * y; }
+  ball& operator*=(const ball& y) {
+    arb_mul(m, m, y.m, ball_bits());
+    return *this;
+  }
 
  private:
   arb_t m;

@@ -11,4 +11,9 @@ long long table_stop_after_rows() {
   return s ? std::atoll(s) : -1;
 }
 
+std::string certified_e_shift() {
+  const char* s = std::getenv("VISCOR_TABLE_SHIFT_CERTIFIED_E");
+  return s ? s : "";
+}
+
 }  // namespace viscor::cli::test_hooks

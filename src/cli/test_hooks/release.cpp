@@ -5,4 +5,6 @@ namespace viscor::cli::test_hooks {
 
 long long table_stop_after_rows() { return -1; }
 
+std::string certified_e_shift() { return ""; }
+
 }  // namespace viscor::cli::test_hooks

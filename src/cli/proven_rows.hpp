@@ -1,0 +1,90 @@
+// The proof's columns of one row of a table of method "proven" (proven_table.hpp,
+// docs/tables.md): viscor::enclose at the spec's digits on the row's exact decimal
+// gamma and g, after the row has been certified as method "certify" does
+// (compute_row). Needs Arb (VISCOR_HAS_ARB).
+#pragma once
+
+#include "proven_table.hpp"
+#include "test_hooks.hpp"
+
+#include <viscor/core/detail/exact_decimal.hpp>
+#include <viscor/core/exceptions.hpp>
+#include <viscor/enclose/enclose.hpp>
+#include <viscor/tables/grid_spec.hpp>
+#include <viscor/tables/reference_table.hpp>
+
+#include <optional>
+#include <string>
+#include <tuple>
+
+namespace viscor::cli {
+
+namespace detail {
+
+/// The decimal exponent of the leading non-zero digit of a decimal text
+/// ("9.6e-01" -> -1, "0.05" -> -2, "12" -> 1); nullopt for zero.
+inline std::optional<int> leading_exponent(const std::string& text) {
+  const std::size_t e = text.find_first_of("eE");
+  const std::string mantissa = text.substr(0, e);
+  const int exponent = e == std::string::npos ? 0 : std::stoi(text.substr(e + 1));
+  int integer_digits = 0;
+  for (char c : mantissa) {
+    if (c == '.') break;
+    integer_digits += c >= '0' && c <= '9';
+  }
+  int k = 0;  // position among the digits
+  for (char c : mantissa) {
+    if (c < '0' || c > '9') continue;
+    if (c != '0') return exponent + integer_digits - 1 - k;
+    ++k;
+  }
+  return std::nullopt;
+}
+
+/// Whether the decimal `value`, certified to `digits` significant digits, lies within
+/// one unit of its last digit of [lower, upper] (a zero value: inside it). The
+/// certificate claims less than half a unit of error after rounding, so a value
+/// further out means that the certificate or the proof is wrong.
+inline bool within_last_digit(const std::string& value, int digits, const std::string& lower,
+                              const std::string& upper) {
+  using viscor::detail::exact_decimal;
+  const exact_decimal x = exact_decimal::parse(value, "certified value");
+  const std::optional<int> lead = leading_exponent(value);
+  const exact_decimal unit = lead ? exact_decimal(1, *lead - digits + 1) : exact_decimal(0, 0);
+  return exact_decimal::parse(lower, "lower bound") - unit <= x && x <= exact_decimal::parse(upper, "upper bound") + unit;
+}
+
+}  // namespace detail
+
+/// The proof's fields of one certified row: ",e_lower,e_upper,one_minus_e_lower,
+/// one_minus_e_upper,proven_digits,outcome_proven", to append to the row's CSV line.
+/// proven_digits is e's (as in `viscor prove --json`); an undecided proof gives empty
+/// bounds and 0 digits. Throws certification_error (and no row is written) when the
+/// proof contradicts the certified row: another outcome, or e or 1 - e outside the
+/// enclosure by more than a unit of its last certified digit.
+inline std::string proven_fields(const grid_point& p, int digits, const table_row& row) {
+  using proofs::proven_outcome;
+  const proofs::cor_enclosure proof = viscor::enclose(p.law, p.gamma, p.g, digits);
+  if (proof.outcome == proven_outcome::undecided) return ",,,,,0,undecided";
+  const std::string where = "row " + std::to_string(p.index) + " (" + p.law.describe() + ", gamma = " + p.gamma +
+                            ", g = " + p.g + ")";
+  const bool proven_rebound = proof.outcome == proven_outcome::rebound;
+  if (proven_rebound != (row.outcome == impact_outcome::rebound))
+    throw certification_error(where + ": the proof gives " + std::string(proofs::to_string(proof.outcome)) +
+                              " (" + proof.how + "), the certificate " + std::string(to_string(row.outcome)) +
+                              "; one of the two is wrong: please report it");
+  using viscor::detail::exact_decimal;
+  const std::string shift = test_hooks::certified_e_shift();  // tests only (test_hooks.hpp): "" in a release
+  const std::string e =
+      shift.empty() ? row.e : (exact_decimal::parse(row.e, "e") + exact_decimal::parse(shift, "shift")).to_string();
+  for (const auto& [name, value, bounds] : {std::tuple{"e", &e, &proof.e},
+                                            std::tuple{"one_minus_e", &row.one_minus_e, &proof.one_minus_e}})
+    if (!detail::within_last_digit(*value, row.digits, bounds->lower, bounds->upper))
+      throw certification_error(where + ": the certified " + std::string(name) + " = " + *value + " (" +
+                                std::to_string(row.digits) + " digits) is outside the proven enclosure [" +
+                                bounds->lower + ", " + bounds->upper + "]; one of the two is wrong: please report it");
+  return "," + proof.e.lower + "," + proof.e.upper + "," + proof.one_minus_e.lower + "," + proof.one_minus_e.upper +
+         "," + std::to_string(proof.e.digits) + "," + std::string(proofs::to_string(proof.outcome));
+}
+
+}  // namespace viscor::cli

@@ -1,0 +1,205 @@
+// Tables of method "proven" (issue 17; docs/tables.md): a CoR table whose rows
+// carry, after the certified columns, those of a proof by viscor::enclose:
+//   ...,digits,method,e_lower,e_upper,one_minus_e_lower,one_minus_e_upper,proven_digits,outcome_proven
+// This header is the file format only (the columns, their reader, and the choice
+// between the formats in table_format); it needs no Arb, so `table merge` reads
+// proven tables in any build. The rows are computed in proven_rows.hpp.
+//
+// NOTE: a CLI layer on purpose: include/viscor/tables/ may not depend on the
+// proofs (tools/check_layers.py), and the library's CoR format stays as it is.
+#pragma once
+
+#include "cli_common.hpp"
+
+#include <viscor/core/contact_law.hpp>
+#include <viscor/core/detail/exact_decimal.hpp>
+#include <viscor/core/exceptions.hpp>
+#include <viscor/tables/reference_table.hpp>
+
+#include <algorithm>
+#include <cstddef>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace viscor::cli {
+
+/// The proof's columns, after the CoR columns.
+inline const std::vector<std::string>& proven_columns() {
+  static const std::vector<std::string> names{"e_lower",           "e_upper",       "one_minus_e_lower",
+                                              "one_minus_e_upper", "proven_digits", "outcome_proven"};
+  return names;
+}
+
+/// Every column of a proven table: the CoR columns, then proven_columns().
+inline const std::vector<std::string>& proven_table_columns() {
+  static const std::vector<std::string> all = [] {
+    std::vector<std::string> c = table_columns(table_kind::cor);
+    c.insert(c.end(), proven_columns().begin(), proven_columns().end());
+    return c;
+  }();
+  return all;
+}
+
+/// The header line of a proven table (without '\n').
+inline std::string proven_table_header() {
+  std::string s;
+  for (const auto& c : proven_table_columns()) s += (s.empty() ? "" : ",") + c;
+  return s;
+}
+
+/// Refuses (invalid_parameter, exit 2) a law the proof cannot handle, naming the
+/// exponent: the proof needs u = s^Q at the end points, i.e. rational exponents.
+inline void require_provable(const contact_law& law, const std::string& where) {
+  for (const auto& [name, x] : {std::pair<const char*, const exponent*>{"alpha", &law.alpha}, {"beta", &law.beta}})
+    if (!x->is_rational())
+      throw invalid_parameter(where + ": not provable: exponent " + std::string(name) + " = " + x->to_string() +
+                              " is not rational (the proof needs u = s^Q at the end points); use method "
+                              "\"certify\" for this law");
+}
+
+namespace detail {
+
+/// Checks the proof's fields of one row (columns from `first` on); errors name file, line and field.
+inline void check_proven_fields(const viscor::detail::row_checker& c, std::size_t first) {
+  const std::size_t e_lo = first, e_hi = first + 1, d_lo = first + 2, d_hi = first + 3, digits = first + 4,
+                    outcome = first + 5;
+  c.one_of(outcome, {"rebound", "stick", "undecided"});
+  c.integer(digits, max_working_digits);
+  if (c.at(outcome) == "undecided") {
+    for (std::size_t k = e_lo; k <= d_hi; ++k)
+      if (!c.at(k).empty()) c.fail(k, "an undecided proof has no bounds (empty field)");
+    if (c.at(digits) != "0") c.fail(digits, "an undecided proof has 0 proven digits");
+    return;
+  }
+  if (c.at(outcome) != c.at(6)) c.fail(outcome, "contradicts the certified outcome '" + c.at(6) + "'");
+  for (const auto& [lo, hi] : {std::pair{e_lo, e_hi}, std::pair{d_lo, d_hi}})
+    if (!(c.decimal(lo) <= c.decimal(hi))) c.fail(hi, "the upper bound is below the lower bound");
+}
+
+}  // namespace detail
+
+/// Parses and validates a proven table (see parse_table of reference_table.hpp:
+/// the same rules, the CoR fields checked by it, the proof's fields here).
+inline csv_table parse_proven_table(const std::string& text, const std::string& file,
+                                    bool allow_truncated_tail = false) {
+  const std::size_t n_cor = table_columns(table_kind::cor).size();
+  const auto& columns = proven_table_columns();
+  std::string cor_text;  // the same lines cut to the CoR columns, for parse_table
+  std::vector<std::string> lines;
+  bool truncated = false;
+  std::size_t pos = 0, line_no = 0;
+  while (pos < text.size()) {
+    const std::size_t end = text.find('\n', pos);
+    ++line_no;
+    const std::string where = file + ":" + std::to_string(line_no);
+    if (end == std::string::npos) {
+      if (allow_truncated_tail) {
+        truncated = true;
+        break;
+      }
+      throw parse_error(where + ": truncated row (the file does not end with a newline)");
+    }
+    const std::string line = text.substr(pos, end - pos);
+    pos = end + 1;
+    if (!line.empty() && line.back() == '\r') throw parse_error(where + ": CR-LF line ends are not allowed");
+    if (line_no == 1) {
+      if (line != proven_table_header())
+        throw parse_error(where + ": wrong columns: expected '" + proven_table_header() +
+                          "' (a table of method proven), got '" + line + "'");
+      cor_text += table_header(table_kind::cor) + "\n";
+      continue;
+    }
+    const std::vector<std::string> fields = viscor::detail::split_csv_line(line);
+    if (fields.size() != columns.size())
+      throw parse_error(where + ": expected " + std::to_string(columns.size()) + " fields (" +
+                        proven_table_header() + "), got " + std::to_string(fields.size()) +
+                        (fields.size() < columns.size() ? " (truncated row?)" : ""));
+    std::string cor_line;
+    for (std::size_t k = 0; k < n_cor; ++k) cor_line += (k ? "," : "") + fields[k];
+    cor_text += cor_line + "\n";
+    lines.push_back(line);
+  }
+  if (line_no == 0) throw parse_error(file + ":1: empty file: no header line");
+  csv_table table = parse_table(cor_text, file);
+  for (std::size_t i = 0; i < table.rows.size(); ++i) {
+    csv_record& row = table.rows[i];
+    row.text = lines[i];
+    row.fields = viscor::detail::split_csv_line(row.text);
+    detail::check_proven_fields(viscor::detail::row_checker(file, row.line, columns, row.fields), n_cor);
+  }
+  table.truncated_tail = truncated;
+  return table;
+}
+
+/// The sidecar's summary of a proven table's rows: the proven outcomes, and the
+/// proven digits of e against the certified digits.
+inline json proof_summary(const std::vector<csv_record>& rows) {
+  const std::size_t n_cor = table_columns(table_kind::cor).size(), certified_digits = n_cor - 2;
+  std::size_t rebound = 0, stick = 0, undecided = 0, at_least_certified = 0;
+  int least = -1;
+  for (const auto& row : rows) {
+    const std::string& outcome = row.fields[n_cor + 5];
+    const int proven = std::stoi(row.fields[n_cor + 4]), certified = std::stoi(row.fields[certified_digits]);
+    if (outcome == "undecided") {
+      ++undecided;
+      continue;
+    }
+    ++(outcome == "rebound" ? rebound : stick);
+    least = least < 0 ? proven : std::min(least, proven);
+    at_least_certified += proven >= certified;
+  }
+  return {{"rows_by_outcome_proven", {{"rebound", rebound}, {"stick", stick}, {"undecided", undecided}}},
+          {"least_proven_digits", least < 0 ? json(nullptr) : json(least)},
+          {"rows_with_proven_digits_at_least_certified", at_least_certified}};
+}
+
+/// The file format of a table: a CoR or sticking table of reference_table.hpp, or a
+/// CoR table with the proof's columns (method "proven").
+struct table_format {
+  table_kind kind = table_kind::cor;
+  bool proven = false;
+
+  /// The header line (without '\n').
+  std::string header() const { return proven ? proven_table_header() : table_header(kind); }
+  /// Index of the `method` column (exact or certified).
+  std::size_t method_column() const { return table_columns(kind).size() - 1; }
+
+  /// Parses and validates a table of this format.
+  csv_table parse(const std::string& text, const std::string& file, bool allow_truncated_tail = false) const {
+    return proven ? parse_proven_table(text, file, allow_truncated_tail)
+                  : parse_table(text, file, allow_truncated_tail);
+  }
+  /// Reads and validates a table file of this format.
+  csv_table read(const std::string& path, bool allow_truncated_tail = false) const {
+    return parse(file_text(path), path, allow_truncated_tail);
+  }
+  /// The canonical text: header, then rows sorted by index (duplicates: parse_error).
+  std::string text(std::vector<csv_record> rows, const std::string& file) const {
+    const std::string body = table_text(kind, std::move(rows), file);
+    return header() + body.substr(body.find('\n'));
+  }
+
+  /// The format of a table file, from its header line (the plain formats' reader
+  /// reports any other header).
+  static table_format of_file(const std::string& path) {
+    const std::string text = file_text(path);
+    const std::string first = text.substr(0, text.find('\n'));
+    if (first == proven_table_header()) return {table_kind::cor, true};
+    if (first == table_header(table_kind::sticking)) return {table_kind::sticking, false};
+    return {table_kind::cor, false};  // read() names any other header
+  }
+
+ private:
+  static std::string file_text(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw error("cannot read table '" + path + "'");
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+  }
+};
+
+}  // namespace viscor::cli
