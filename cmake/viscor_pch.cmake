@@ -1,7 +1,10 @@
 # Precompiled headers (docs/performance.md, "Build time"). Every viscor translation
 # unit parses Boost.Multiprecision and Boost.Math, about 10 s of CPU each, the CLI's
 # also CLI11 and nlohmann-json (4 s each): more time than some of them spend
-# generating code. A precompiled header parses them once per target.
+# generating code. A precompiled header parses them once per target. Used by the
+# tests (one header for the suite) and by the subcommands when they are compiled
+# one by one (VISCOR_CLI_UNITY_BUILD=OFF); not by the library's instantiation files,
+# where it cost more than it saved.
 option(VISCOR_PRECOMPILED_HEADERS "Precompile the heavy headers once per target" ON)
 
 set(VISCOR_PCH_BOOST

@@ -14,7 +14,7 @@
 #include <sstream>
 #include <vector>
 
-namespace viscor::cli {
+namespace viscor::cli::cmd_approx {  // named: the subcommands share translation units (unity build)
 namespace {
 
 constexpr std::array<const char*, 8> formula_names{"all",   "small_g",       "large_g",         "schwager_poschel",
@@ -207,4 +207,4 @@ const registration reg{"approx", "the report's approximate CoR formulas (small g
                        setup};
 
 }  // namespace
-}  // namespace viscor::cli
+}  // namespace viscor::cli::cmd_approx

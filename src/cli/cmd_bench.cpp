@@ -36,7 +36,7 @@
 #include <sstream>
 #include <tuple>
 
-namespace viscor::cli {
+namespace viscor::cli::cmd_bench {  // named: the subcommands share translation units (unity build)
 namespace {
 
 using clock_type = std::chrono::steady_clock;
@@ -437,4 +437,4 @@ void setup(CLI::App& app) {
 const registration reg{"bench", "median time per CoR and accuracy of every method", setup};
 
 }  // namespace
-}  // namespace viscor::cli
+}  // namespace viscor::cli::cmd_bench

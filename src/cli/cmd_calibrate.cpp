@@ -15,7 +15,7 @@
 #include <chrono>
 #include <sstream>
 
-namespace viscor::cli {
+namespace viscor::cli::cmd_calibrate {  // named: the subcommands share translation units (unity build)
 namespace {
 
 struct calibrate_command {
@@ -166,4 +166,4 @@ void setup(CLI::App& app) {
 const registration reg{"calibrate", "damping (gamma or gamma0) that gives a target CoR", setup};
 
 }  // namespace
-}  // namespace viscor::cli
+}  // namespace viscor::cli::cmd_calibrate

@@ -19,7 +19,7 @@
 #include <map>
 #include <sstream>
 
-namespace viscor::cli {
+namespace viscor::cli::cmd_cor {  // named: the subcommands share translation units (unity build)
 namespace {
 
 // The spelling before 0.2.0: "--physical m=2.05e-3,k=6.97e9,gamma0=0,v0=0.246,gravity=9.8,F=0".
@@ -211,4 +211,4 @@ void setup(CLI::App& app) {
 const registration reg{"cor", "coefficient of restitution by integration to the working precision", setup};
 
 }  // namespace
-}  // namespace viscor::cli
+}  // namespace viscor::cli::cmd_cor

@@ -12,7 +12,7 @@
 #include <sstream>
 #include <vector>
 
-namespace viscor::cli {
+namespace viscor::cli::cmd_dem {  // named: the subcommands share translation units (unity build)
 namespace {
 
 std::vector<std::string> split_list(const std::string& text) {
@@ -293,4 +293,4 @@ void setup(CLI::App& app) {
 const registration reg{"dem", "damping entries for LAMMPS / LIGGGHTS / YADE inputs that reproduce a measured e", setup};
 
 }  // namespace
-}  // namespace viscor::cli
+}  // namespace viscor::cli::cmd_dem

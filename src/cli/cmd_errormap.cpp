@@ -12,7 +12,7 @@
 #include <ctime>
 #include <sstream>
 
-namespace viscor::cli {
+namespace viscor::cli::cmd_errormap {  // named: the subcommands share translation units (unity build)
 namespace {
 
 std::vector<std::string> split_list(const std::string& text, const std::string& name) {
@@ -119,4 +119,4 @@ void setup(CLI::App& app) {
 const registration reg{"errormap", "build the error map of the approximations for one law", setup};
 
 }  // namespace
-}  // namespace viscor::cli
+}  // namespace viscor::cli::cmd_errormap

@@ -7,7 +7,7 @@
 
 #include <sstream>
 
-namespace viscor::cli {
+namespace viscor::cli::cmd_exact {  // named: the subcommands share translation units (unity build)
 namespace {
 
 struct exact_command {
@@ -69,4 +69,4 @@ void setup(CLI::App& app) {
 const registration reg{"exact", "closed-form CoR where one exists", setup};
 
 }  // namespace
-}  // namespace viscor::cli
+}  // namespace viscor::cli::cmd_exact

@@ -9,7 +9,7 @@
 #include <algorithm>
 #include <sstream>
 
-namespace viscor::cli {
+namespace viscor::cli::cmd_prove {  // named: the subcommands share translation units (unity build)
 namespace {
 
 struct prove_command {
@@ -67,5 +67,5 @@ void setup(CLI::App& app) {
 const registration reg{"prove", "proven enclosure of e (ball arithmetic; rational exponents)", setup};
 
 }  // namespace
-}  // namespace viscor::cli
+}  // namespace viscor::cli::cmd_prove
 #endif

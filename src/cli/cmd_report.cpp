@@ -22,7 +22,7 @@
 #include <sstream>
 #include <vector>
 
-namespace viscor::cli {
+namespace viscor::cli::cmd_report {  // named: the subcommands share translation units (unity build)
 namespace {
 
 namespace fs = std::filesystem;
@@ -351,4 +351,4 @@ const registration reg{"report",
                        setup};
 
 }  // namespace
-}  // namespace viscor::cli
+}  // namespace viscor::cli::cmd_report

@@ -7,7 +7,7 @@
 
 #include <sstream>
 
-namespace viscor::cli {
+namespace viscor::cli::cmd_scale {  // named: the subcommands share translation units (unity build)
 namespace {
 
 struct scale_command {
@@ -77,4 +77,4 @@ void setup(CLI::App& app) {
 const registration reg{"scale", "convert physical parameters to scaled (gamma, g) and back (eq. 2)", setup};
 
 }  // namespace
-}  // namespace viscor::cli
+}  // namespace viscor::cli::cmd_scale

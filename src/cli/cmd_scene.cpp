@@ -18,7 +18,7 @@
 #include <map>
 #include <sstream>
 
-namespace viscor::cli {
+namespace viscor::cli::cmd_scene {  // named: the subcommands share translation units (unity build)
 namespace {
 
 // Full-precision decimal; double formatted directly (the same text as to_decimal_string, 10x faster).
@@ -236,4 +236,4 @@ void setup(CLI::App& app) {
 const registration reg{"scene", "evaluate every impact of a scene file to its tolerance", setup};
 
 }  // namespace
-}  // namespace viscor::cli
+}  // namespace viscor::cli::cmd_scene

@@ -25,7 +25,7 @@
 #include <sstream>
 #include <thread>
 
-namespace viscor::cli {
+namespace viscor::cli::cmd_surrogate {  // named: the subcommands share translation units (unity build)
 namespace {
 
 using namespace viscor::surrogate;
@@ -316,4 +316,4 @@ void setup(CLI::App& app) {
 const registration reg{"surrogate", "fast certified-by-verification surrogates of e(gamma, g) (docs/surrogate.md)", setup};
 
 }  // namespace
-}  // namespace viscor::cli
+}  // namespace viscor::cli::cmd_surrogate

@@ -26,7 +26,7 @@
 #include <memory>
 #include <thread>
 
-namespace viscor::cli {
+namespace viscor::cli::cmd_table {  // named: the subcommands share translation units (unity build)
 namespace {
 
 json scalar_provenance(int digits) {
@@ -356,4 +356,4 @@ const registration reg{"table", "certified reference tables from a grid spec (al
                        setup};
 
 }  // namespace
-}  // namespace viscor::cli
+}  // namespace viscor::cli::cmd_table
