@@ -38,7 +38,8 @@ def main(source, target):
         if row["median_abs_error"] and float(row["median_abs_error"]) > 0:
             ax.loglog(row["median_seconds"], float(row["median_abs_error"]), marker=marker, color=colour,
                       markerfacecolor="none", linestyle="none")
-        label = row["method"].replace("approx ", "") + ("" if row["precision"] == "double" else ", " + row["precision"])
+        scalar = row.get("scalar", row.get("precision", ""))  # "precision" in files written before 0.2.0
+        label = row["method"].replace("approx ", "") + ("" if scalar == "double" else ", " + scalar)
         # Alternate label heights: the approximations sit close together.
         ax.annotate(label, (row["median_seconds"], error), textcoords="offset points", xytext=(5, 3 + 9 * (n % 3)),
                     fontsize=7)
