@@ -20,38 +20,9 @@ namespace {
 namespace fs = std::filesystem;
 using viscor::test::run_cli;
 
-class TableCli : public ::testing::Test {
+class TableCli : public viscor::test::scratch_dir_test {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    m_dir = fs::path(::testing::TempDir()) / ("viscor_table_" + std::string(info->name()));
-    fs::remove_all(m_dir);
-    fs::create_directories(m_dir);
-  }
-  void TearDown() override {
-    unsetenv("VISCOR_TABLE_STOP_AFTER");
-    if (!HasFailure()) fs::remove_all(m_dir);
-  }
-
-  std::string path(const std::string& name) const { return (m_dir / name).string(); }
-  std::string write(const std::string& name, const std::string& text) const {
-    std::ofstream(path(name), std::ios::binary) << text;
-    return path(name);
-  }
-  static std::string read(const std::string& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-  }
-  std::vector<std::string> files() const {
-    std::vector<std::string> names;
-    for (const auto& e : fs::directory_iterator(m_dir)) names.push_back(e.path().filename().string());
-    std::sort(names.begin(), names.end());
-    return names;
-  }
-
-  fs::path m_dir;
+  TableCli() : scratch_dir_test("viscor_table_") {}
 };
 
 // Linear law (closed form at every g): 6 gamma (one overdamped) x 5 g (one

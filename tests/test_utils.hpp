@@ -8,13 +8,17 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
 #include <type_traits>
+#include <utility>
+#include <vector>
 #include <unistd.h>
 
 namespace viscor::test {
@@ -127,6 +131,45 @@ inline cli_run run_cli(const std::string& args, const std::string& program = VIS
   std::remove(err.c_str());
   return r;
 }
+
+/// A test with its own empty scratch directory, TempDir()/<prefix><test name>:
+/// removed after a passing test, kept for inspection after a failing one. The
+/// table runner's test hooks set by a test are unset after it.
+class scratch_dir_test : public ::testing::Test {
+ protected:
+  explicit scratch_dir_test(std::string prefix) : m_prefix(std::move(prefix)) {}
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    m_dir = std::filesystem::path(::testing::TempDir()) / (m_prefix + info->name());
+    std::filesystem::remove_all(m_dir);
+    std::filesystem::create_directories(m_dir);
+  }
+  void TearDown() override {
+    unsetenv("VISCOR_TABLE_STOP_AFTER");
+    unsetenv("VISCOR_TABLE_SHIFT_CERTIFIED_E");
+    if (!HasFailure()) std::filesystem::remove_all(m_dir);
+  }
+  std::string path(const std::string& name) const { return (m_dir / name).string(); }
+  std::string write(const std::string& name, const std::string& text) const {
+    std::ofstream(path(name), std::ios::binary) << text;
+    return path(name);
+  }
+  static std::string read(const std::string& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+  }
+  /// The names of the files in the scratch directory, sorted.
+  std::vector<std::string> files() const {
+    std::vector<std::string> names;
+    for (const auto& e : std::filesystem::directory_iterator(m_dir)) names.push_back(e.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
+  }
+  std::string m_prefix;
+  std::filesystem::path m_dir;
+};
 
 }  // namespace viscor::test
 
