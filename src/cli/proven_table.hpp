@@ -89,40 +89,28 @@ inline csv_table parse_proven_table(const std::string& text, const std::string& 
   const auto& columns = proven_table_columns();
   std::string cor_text;  // the same lines cut to the CoR columns, for parse_table
   std::vector<std::string> lines;
-  bool truncated = false;
-  std::size_t pos = 0, line_no = 0;
-  while (pos < text.size()) {
-    const std::size_t end = text.find('\n', pos);
-    ++line_no;
-    const std::string where = file + ":" + std::to_string(line_no);
-    if (end == std::string::npos) {
-      if (allow_truncated_tail) {
-        truncated = true;
-        break;
-      }
-      throw parse_error(where + ": truncated row (the file does not end with a newline)");
-    }
-    const std::string line = text.substr(pos, end - pos);
-    pos = end + 1;
-    if (!line.empty() && line.back() == '\r') throw parse_error(where + ": CR-LF line ends are not allowed");
-    if (line_no == 1) {
-      if (line != proven_table_header())
-        throw parse_error(where + ": wrong columns: expected '" + proven_table_header() +
-                          "' (a table of method proven), got '" + line + "'");
-      cor_text += table_header(table_kind::cor) + "\n";
-      continue;
-    }
-    const std::vector<std::string> fields = viscor::detail::split_csv_line(line);
-    if (fields.size() != columns.size())
-      throw parse_error(where + ": expected " + std::to_string(columns.size()) + " fields (" +
-                        proven_table_header() + "), got " + std::to_string(fields.size()) +
-                        (fields.size() < columns.size() ? " (truncated row?)" : ""));
-    std::string cor_line;
-    for (std::size_t k = 0; k < n_cor; ++k) cor_line += (k ? "," : "") + fields[k];
-    cor_text += cor_line + "\n";
-    lines.push_back(line);
-  }
-  if (line_no == 0) throw parse_error(file + ":1: empty file: no header line");
+  bool have_header = false;
+  const bool truncated = viscor::detail::for_each_table_line(
+      text, file, allow_truncated_tail, [&](std::string line, std::size_t, const std::string& where) {
+        if (!have_header) {
+          if (line != proven_table_header())
+            throw parse_error(where + ": wrong columns: expected '" + proven_table_header() +
+                              "' (a table of method proven), got '" + line + "'");
+          cor_text += table_header(table_kind::cor) + "\n";
+          have_header = true;
+          return;
+        }
+        const std::vector<std::string> fields = viscor::detail::split_csv_line(line);
+        if (fields.size() != columns.size())
+          throw parse_error(where + ": expected " + std::to_string(columns.size()) + " fields (" +
+                            proven_table_header() + "), got " + std::to_string(fields.size()) +
+                            (fields.size() < columns.size() ? " (truncated row?)" : ""));
+        std::string cor_line;
+        for (std::size_t k = 0; k < n_cor; ++k) cor_line += (k ? "," : "") + fields[k];
+        cor_text += cor_line + "\n";
+        lines.push_back(std::move(line));
+      });
+  if (!have_header) throw parse_error(file + ":1: empty file: no header line");
   csv_table table = parse_table(cor_text, file);
   for (std::size_t i = 0; i < table.rows.size(); ++i) {
     csv_record& row = table.rows[i];

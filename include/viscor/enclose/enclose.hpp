@@ -90,7 +90,7 @@ inline std::string decimal(const mpfr_t x, int digits, mpfr_rnd_t rnd) {
 /// digits (searched down from a little above the relative width; at most `cap`).
 inline proven_bounds bounds_of(const ball& x, int cap) {
   proven_bounds b;
-  if (!x.finite()) return {"-inf", "inf", 0};
+  if (!x.finite()) return {"-inf", "inf", 0, ""};
   mpfr_t lo, hi;
   ball_end(lo, x, false);
   ball_end(hi, x, true);

@@ -253,6 +253,31 @@ inline void check_sticking_row(const row_checker& c) {
   c.one_of(10, {"exact", "certified"});
 }
 
+/// Walks the lines of a table file's text: calls on_line(line, line_no, where) for
+/// each '\n'-terminated line (where = "file:line"), refusing CR-LF line ends. A last
+/// line without '\n' (a write cut short by a kill) is an error, or with
+/// allow_truncated_tail is dropped and reported by returning true. Shared by the
+/// readers of every table format (here and the CLI's proven tables).
+template <class OnLine>
+bool for_each_table_line(const std::string& text, const std::string& file, bool allow_truncated_tail,
+                         OnLine&& on_line) {
+  std::size_t pos = 0, line_no = 0;
+  while (pos < text.size()) {
+    const std::size_t end = text.find('\n', pos);
+    ++line_no;
+    const std::string where = file + ":" + std::to_string(line_no);
+    if (end == std::string::npos) {
+      if (allow_truncated_tail) return true;
+      throw parse_error(where + ": truncated row (the file does not end with a newline)");
+    }
+    std::string line = text.substr(pos, end - pos);
+    pos = end + 1;
+    if (!line.empty() && line.back() == '\r') throw parse_error(where + ": CR-LF line ends are not allowed");
+    on_line(std::move(line), line_no, where);
+  }
+  return false;
+}
+
 }  // namespace detail
 
 /// Parses and validates the text of a table file named `file` (for messages).
@@ -261,23 +286,9 @@ inline void check_sticking_row(const row_checker& c) {
 /// Throws parse_error naming file, line and field.
 inline csv_table parse_table(const std::string& text, const std::string& file, bool allow_truncated_tail = false) {
   csv_table table;
-  std::size_t pos = 0, line_no = 0;
   bool have_header = false;
   std::vector<std::string> columns;
-  while (pos < text.size()) {
-    const std::size_t end = text.find('\n', pos);
-    ++line_no;
-    const std::string where = file + ":" + std::to_string(line_no);
-    if (end == std::string::npos) {
-      if (allow_truncated_tail) {
-        table.truncated_tail = true;
-        break;
-      }
-      throw parse_error(where + ": truncated row (the file does not end with a newline)");
-    }
-    std::string line = text.substr(pos, end - pos);
-    pos = end + 1;
-    if (!line.empty() && line.back() == '\r') throw parse_error(where + ": CR-LF line ends are not allowed");
+  auto on_line = [&](std::string line, std::size_t line_no, const std::string& where) {
     if (!have_header) {
       if (line == table_header(table_kind::cor))
         table.kind = table_kind::cor;
@@ -288,7 +299,7 @@ inline csv_table parse_table(const std::string& text, const std::string& file, b
                           table_header(table_kind::sticking) + "' (sticking thresholds), got '" + line + "'");
       columns = table_columns(table.kind);
       have_header = true;
-      continue;
+      return;
     }
     csv_record record;
     record.fields = detail::split_csv_line(line);
@@ -305,7 +316,8 @@ inline csv_table parse_table(const std::string& text, const std::string& file, b
       detail::check_sticking_row(check);
     record.text = std::move(line);
     table.rows.push_back(std::move(record));
-  }
+  };
+  table.truncated_tail = detail::for_each_table_line(text, file, allow_truncated_tail, on_line);
   if (!have_header) throw parse_error(file + ":1: empty file: no header line");
   return table;
 }
