@@ -64,10 +64,16 @@ inline bool within_last_digit(const std::string& value, int digits, const std::s
 /// enclosure by more than a unit of its last certified digit.
 inline std::string proven_fields(const grid_point& p, int digits, const table_row& row) {
   using proofs::proven_outcome;
-  const proofs::cor_enclosure proof = viscor::enclose(p.law, p.gamma, p.g, digits);
-  if (proof.outcome == proven_outcome::undecided) return ",,,,,0,undecided";
   const std::string where = "row " + std::to_string(p.index) + " (" + p.law.describe() + ", gamma = " + p.gamma +
                             ", g = " + p.g + ")";
+  const proofs::cor_enclosure proof = [&] {
+    try {
+      return viscor::enclose(p.law, p.gamma, p.g, digits);
+    } catch (const error& e) {  // say which row: the run stops here, keeping the rows done
+      throw error(where + ": the proof failed: " + e.what());
+    }
+  }();
+  if (proof.outcome == proven_outcome::undecided) return ",,,,,0,undecided";
   const bool proven_rebound = proof.outcome == proven_outcome::rebound;
   if (proven_rebound != (row.outcome == impact_outcome::rebound))
     throw certification_error(where + ": the proof gives " + std::string(proofs::to_string(proof.outcome)) +
