@@ -87,6 +87,13 @@ struct step_enclosure {
   }
 };
 
+/// The exact ball 2^e.
+inline ball ball_2exp(long e) {
+  ball b(1);
+  arb_mul_2exp_si(b.get(), b.get(), e);
+  return b;
+}
+
 /// The interval [0, h] as a ball.
 inline ball zero_to(const ball& h) { return ball::hull(ball(0), h); }
 
@@ -99,20 +106,22 @@ step_enclosure validated_step(const S& system, const ball_jet& coefficients, con
   step.coefficients = coefficients;
   const std::size_t n = system.size();
   const ball interval = zero_to(h);
-  ball half_precision;
-  arb_one(half_precision.get());
-  arb_mul_2exp_si(half_precision.get(), half_precision.get(), -ball_bits() / 2);
+  const ball half_precision = ball_2exp(-ball_bits() / 2);
   // The polynomial part over [0, h] and a first candidate box around it.
   std::vector<ball> polynomial(n), box(n);
   for (std::size_t i = 0; i < n; ++i) {
     polynomial[i] = evaluate_with_remainder(step.coefficients[i], ball(0), interval);
     const ball last = step.coefficients[i][order] * pow(h, order);
     // The box's width feeds the remainder's width (times about (|J| h)^(p+1) / (p+1)!),
-    // so it starts tight: the last term's size, half the working digits relative, and
-    // an absolute 2^-64 that keeps it open around exact components (a point has no
-    // interior).
+    // so it starts tight: the last term's size, half the working digits relative, an
+    // absolute 2^-64 that keeps it open around exact components (a point has no
+    // interior), and 2^-20 of the polynomial's own radius. NOTE: without that last
+    // part the first box never passed: Arb's radius has 30 bits, so a widening below
+    // 2^-30 of it is lost to the same upward rounding the candidate's radius gets, the
+    // candidate is not in the box's interior, and the retry doubled the box (a twice
+    // wider box, a larger remainder, shorter steps, and a second jet on the box).
     box[i] = polynomial[i].widened(4 * last.abs_upper() + polynomial[i].abs_upper() * half_precision +
-                                   ball::from_decimal("5.42e-20"));
+                                   polynomial[i].rad() * ball_2exp(-20) + ball_2exp(-64));
   }
   const ball tail_power = pow(interval, order + 1);
   for (int attempt = 0; attempt < 8; ++attempt) {
