@@ -212,10 +212,10 @@ inline proven_impact prove_impact(const contact_law& law, std::string_view gamma
   // (near the maximal compression, where v -> 0, the s-series converge slowly).
   s_system in{&k, +1};
   std::vector<ball> x{ball(0), ball(1), ball(0), ball(0)};  // s, v, tau, D
-  double last_size = 0;
+  step_memory memory;
   for (;;) {
     if (++result.steps > options.max_steps) return undecided("step budget exhausted on the way in");
-    const auto step = find_step(in, in.jet(x, order), order, log2_tolerance, last_size, options.max_halvings,
+    const auto step = find_step(in, in.jet(x, order), order, log2_tolerance, memory, options.max_halvings,
                                 [&](const step_enclosure& st) { return (st.range[1] - quarter).positive(); });
     if (!step) {
       if (x[0].positive()) break;  // v is near 1/4: continue in tau
@@ -232,10 +232,10 @@ inline proven_impact prove_impact(const contact_law& law, std::string_view gamma
   ball tau = x[2];
   s_system out{&k, -1};
   first_maximum turning;  // u_max: v falls through 0 in this phase (v >= 1/4 before, v < 0 after)
-  last_size = 0;
+  memory = {};
   for (;;) {
     if (++result.steps > options.max_steps) return undecided("step budget exhausted in tau");
-    const auto step = find_step(mid, mid.jet(y, order), order, log2_tolerance, last_size, options.max_halvings,
+    const auto step = find_step(mid, mid.jet(y, order), order, log2_tolerance, memory, options.max_halvings,
                                 [](const step_enclosure& st) { return st.range[0].positive(); });
     if (!step) return undecided("no validated step in tau at tau = " + tau.mid_str(10));
     turning.add(*step, 0, 1, [&k](const std::vector<ball>& state) { return detail::acceleration(k, state); });
@@ -255,7 +255,7 @@ inline proven_impact prove_impact(const contact_law& law, std::string_view gamma
 
   // The way out: s down to 0, with v < 0 over every step. The last step is as long
   // as the upper bound of s, and ends where sigma = s0: s = 0 exactly.
-  last_size = 0;
+  memory = {};
   for (;;) {
     if (++result.steps > options.max_steps) return undecided("step budget exhausted on the way out");
     const ball_jet jet = out.jet(x, order);
@@ -273,7 +273,7 @@ inline proven_impact prove_impact(const contact_law& law, std::string_view gamma
         return result;
       }
     }
-    const auto step = find_step(out, jet, order, log2_tolerance, last_size, options.max_halvings,
+    const auto step = find_step(out, jet, order, log2_tolerance, memory, options.max_halvings,
                                 [](const step_enclosure& st) { return st.range[1].negative() && st.range[0].positive(); });
     if (!step) return undecided("no validated step on the way out (v near 0?)");
     x = step->state_at(step->h);

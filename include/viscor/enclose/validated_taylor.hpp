@@ -158,7 +158,7 @@ inline double retry_size(const step_enclosure& step, double log2_tolerance, std:
   const double h = step.h.mid_double();
   if (!step.validated) return h / 2;
   const double excess = step.excess_bits(log2_tolerance);
-  return h * std::clamp(std::exp2(-(excess + 1) / static_cast<double>(order + 1)), 0.1, 0.9);
+  return h * std::clamp(std::exp2(-(excess + 1) / static_cast<double>(order + 1)), 0.1, 0.97);
 }
 
 /// A step size for which the last retained coefficients are below 2^log2_tolerance
@@ -178,21 +178,39 @@ inline double proposed_step(const ball_jet& c, std::size_t order, double log2_to
   return std::exp2(log2_h);
 }
 
+/// What find_step carries from one step to the next of an integration.
+struct step_memory {
+  double last_size = 0;  ///< the last accepted size (0: none yet)
+  /// By how many bits the remainder at the Jorba-Zou proposal exceeded the tolerance
+  /// at the last validated try (extrapolated from the size tried: the contribution
+  /// scales as h^(p+1)). The box-based remainder over-estimates the truncation error
+  /// by about 20 bits, so the proposal alone failed the tightness test at almost
+  /// every step (a wasted jet on the box per step); the next proposal is shortened by
+  /// this much plus 4 bits (measured: with 2 the enclosures came out slightly wider
+  /// than the retries' steps gave; with 4 slightly tighter, and 3/4 of the steps pass
+  /// at their first try).
+  double overshoot_bits = 0;
+};
+
 /// A step from the state whose coefficients are `jet`: the first of the sizes
-/// tried (min(proposal, 1.25 x the last accepted size), then retry_size) that is
-/// validated, tight and accepted by `accept(step)`; nullopt after `attempts` tries.
-/// `last_size` is updated with the accepted size.
+/// tried (the proposal shortened by memory.overshoot_bits and at most 1.25 x the last
+/// accepted size, then retry_size) that is validated, tight and accepted by
+/// `accept(step)`; nullopt after `attempts` tries. `memory` is updated.
 template <ball_system S, class Accept>
 std::optional<step_enclosure> find_step(const S& system, const ball_jet& jet, std::size_t order,
-                                        double log2_tolerance, double& last_size, int attempts, Accept accept) {
-  double h = proposed_step(jet, order, log2_tolerance);
-  if (last_size > 0) h = std::min(h, 1.25 * last_size);
+                                        double log2_tolerance, step_memory& memory, int attempts, Accept accept) {
+  const double p1 = static_cast<double>(order + 1);
+  const double proposal = proposed_step(jet, order, log2_tolerance);
+  double h = proposal * std::exp2(-(memory.overshoot_bits + 4) / p1);
+  if (memory.last_size > 0) h = std::min(h, 1.25 * memory.last_size);
   for (int attempt = 0; attempt < attempts; ++attempt) {
     ball size;
     arb_set_d(size.get(), h);  // exact: a double is a dyadic number
     step_enclosure step = validated_step(system, jet, size, order);
+    if (step.validated)
+      memory.overshoot_bits = std::max(0.0, step.excess_bits(log2_tolerance) + p1 * std::log2(proposal / h));
     if (step.validated && step.tight(log2_tolerance) && accept(step)) {
-      last_size = h;
+      memory.last_size = h;
       return step;
     }
     h = step.validated && !step.tight(log2_tolerance) ? retry_size(step, log2_tolerance, order) : h / 2;
