@@ -87,6 +87,26 @@ struct step_enclosure {
   }
 };
 
+/// Bits of the balls in which the a priori enclosure's jet is computed. The box
+/// holds the whole path over the step (its relative width is at least 2^-(bits/2),
+/// usually 0.01-1), so its order-(p+1) coefficient is a wide ball, and rounding to
+/// 64-bit midpoints (2^-64 relative) is far below that width: the working precision
+/// buys nothing there but costs (Arb's products grow with the limbs, and a ball of
+/// more than two limbs allocates; one limb is the fastest case). Rigorous at any
+/// precision, as every ball operation is.
+inline constexpr slong box_jet_bits = 64;
+
+/// system.jet(box, order) in balls of box_jet_bits: the box rounded (outwards) to
+/// that precision, and every operation of the jet at it.
+template <ball_system S>
+ball_jet jet_on_box(const S& system, const std::vector<ball>& box, std::size_t order) {
+  const slong bits = std::min(box_jet_bits, ball_bits());
+  scoped_ball_bits low(bits);
+  std::vector<ball> rounded(box.size());
+  for (std::size_t i = 0; i < box.size(); ++i) arb_set_round(rounded[i].get(), box[i].get(), bits);
+  return system.jet(rounded, order);
+}
+
 /// The exact ball 2^e.
 inline ball ball_2exp(long e) {
   ball b(1);
@@ -125,7 +145,7 @@ step_enclosure validated_step(const S& system, const ball_jet& coefficients, con
   }
   const ball tail_power = pow(interval, order + 1);
   for (int attempt = 0; attempt < 8; ++attempt) {
-    const ball_jet on_box = system.jet(box, order + 1);
+    const ball_jet on_box = jet_on_box(system, box, order + 1);
     std::vector<ball> candidate(n), remainder(n);
     bool inside = true;
     for (std::size_t i = 0; i < n; ++i) {
