@@ -45,14 +45,18 @@ inline ball quotient(const ball& a_k, const std::vector<ball>& q, const std::vec
 /// - k sum u_j w_{k-j} (two dot products, no weighted copy) was 10-15 % faster but widened
 /// the remainder over a step's box enough to cost steps (63 -> 69 for Kuwabara-Kono at
 /// 30 digits) and to hide a 1e-9 under-estimated remainder (enclose_impact_test).
-inline ball power(const std::vector<ball>& u, const std::vector<ball>& w, const ball& a, std::size_t k) {
+/// `weighted` is scratch space for the weighted u_j, kept by the caller from one order
+/// to the next: a fresh vector per coefficient cost k allocations of multi-limb balls
+/// (Arb keeps at most two limbs inline), O(p^2) per jet.
+inline ball power(const std::vector<ball>& u, const std::vector<ball>& w, const ball& a, std::size_t k,
+                  std::vector<ball>& weighted) {
   ball r;
   if (k == 0) {
     arb_pow(r.get(), u[0].get(), a.get(), ball_bits());  // indeterminate unless u_0 > 0
     return r;
   }
   const slong prec = ball_bits();
-  std::vector<ball> weighted(k);  // (a j - (k - j)) u_j, j = 1..k
+  if (weighted.size() < k) weighted.resize(k);  // (a j - (k - j)) u_j, j = 1..k
   for (std::size_t j = 1; j <= k; ++j) {
     arb_mul_si(weighted[j - 1].get(), a.get(), static_cast<slong>(j), prec);
     arb_sub_si(weighted[j - 1].get(), weighted[j - 1].get(), static_cast<slong>(k - j), prec);
@@ -62,6 +66,12 @@ inline ball power(const std::vector<ball>& u, const std::vector<ball>& w, const 
   arb_div(r.get(), r.get(), u[0].get(), prec);
   arb_div_si(r.get(), r.get(), static_cast<slong>(k), prec);
   return r;
+}
+
+/// power() with its own scratch space.
+inline ball power(const std::vector<ball>& u, const std::vector<ball>& w, const ball& a, std::size_t k) {
+  std::vector<ball> weighted;
+  return power(u, w, a, k, weighted);
 }
 
 /// The coefficient k of (s0 + d sigma)^m in sigma, m >= 0 an integer and d = +1 or

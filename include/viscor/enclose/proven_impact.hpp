@@ -112,11 +112,11 @@ struct tau_system {
   ball_jet jet(const std::vector<ball>& x, std::size_t order) const {
     ball_jet c(3, std::vector<ball>(order + 1));
     for (std::size_t i = 0; i < 3; ++i) c[i][0] = x[i];
-    std::vector<ball> spring(order), damping_power(order), damped_v(order);
+    std::vector<ball> spring(order), damping_power(order), damped_v(order), scratch;
     const ball beta_minus_one = k->beta - 1;
     for (std::size_t n = 0; n < order; ++n) {
-      spring[n] = series::power(c[0], spring, k->alpha, n);
-      damping_power[n] = k->beta_is_one ? ball(n == 0 ? 1 : 0) : series::power(c[0], damping_power, beta_minus_one, n);
+      spring[n] = series::power(c[0], spring, k->alpha, n, scratch);
+      damping_power[n] = k->beta_is_one ? ball(n == 0 ? 1 : 0) : series::power(c[0], damping_power, beta_minus_one, n, scratch);
       damped_v[n] = series::product(damping_power, c[1], n);  // u^(beta-1) v
       ball dv = -spring[n] - k->gamma_beta * damped_v[n];
       if (n == 0) dv += k->g;
