@@ -59,6 +59,9 @@ struct impact_ball_constants {
   ball alpha, beta, gamma, g, gamma_beta;
   long Q = 1, Q_alpha = 1, Q_beta = 1;  ///< u = s^Q; Q alpha, Q beta integers
   bool beta_is_one = false;
+  /// m when alpha = m + (beta - 1) with m = 0 or 1 (Hunt-Crossley: 0, Kuwabara-Kono: 1):
+  /// u^alpha = u^m u^(beta - 1) exactly, one power series where there were two; -1 otherwise.
+  long spring_shift = -1;
 };
 
 /// The equations in s, stepping in sigma with s = s0 + direction sigma.
@@ -115,8 +118,13 @@ struct tau_system {
     std::vector<ball> spring(order), damping_power(order), damped_v(order), scratch;
     const ball beta_minus_one = k->beta - 1;
     for (std::size_t n = 0; n < order; ++n) {
-      spring[n] = series::power(c[0], spring, k->alpha, n, scratch);
       damping_power[n] = k->beta_is_one ? ball(n == 0 ? 1 : 0) : series::power(c[0], damping_power, beta_minus_one, n, scratch);
+      if (k->spring_shift == 0)
+        spring[n] = damping_power[n];
+      else if (k->spring_shift == 1)
+        spring[n] = series::product(damping_power, c[0], n);  // u^alpha = u u^(beta - 1)
+      else
+        spring[n] = series::power(c[0], spring, k->alpha, n, scratch);
       damped_v[n] = series::product(damping_power, c[1], n);  // u^(beta-1) v
       ball dv = -spring[n] - k->gamma_beta * damped_v[n];
       if (n == 0) dv += k->g;
@@ -196,6 +204,9 @@ inline proven_impact prove_impact(const contact_law& law, std::string_view gamma
   k.Q_alpha = k.Q / law.alpha.denominator() * law.alpha.numerator();
   k.Q_beta = k.Q / law.beta.denominator() * law.beta.numerator();
   k.beta_is_one = law.beta.numerator() == law.beta.denominator();
+  // alpha - (beta - 1) = (Q alpha - Q beta + Q) / Q.
+  if (const long shift = k.Q_alpha - k.Q_beta + k.Q; !k.beta_is_one && (shift == 0 || shift == k.Q))
+    k.spring_shift = shift / k.Q;
 
   const double log2_tolerance =
       -static_cast<double>(options.step_tolerance_bits > 0 ? options.step_tolerance_bits : proofs::ball_bits());
