@@ -10,6 +10,7 @@
 
 #include <viscor/enclose/ball.hpp>
 
+#include <algorithm>
 #include <cstddef>
 #include <vector>
 
@@ -23,6 +24,15 @@ static_assert(sizeof(ball) == sizeof(arb_struct), "a ball must be exactly one ar
 inline ball product(const std::vector<ball>& a, const std::vector<ball>& b, std::size_t k) {
   ball s;
   arb_dot(s.get(), nullptr, 0, a[0].get(), 1, b[k].get(), -1, static_cast<slong>(k + 1), ball_bits());
+  return s;
+}
+
+/// (a b)_k for a polynomial a (a.size() coefficients, usually few) and a series b:
+/// sum_{j <= min(k, deg a)} a_j b_{k-j}, one dot product of at most a.size() terms.
+inline ball polynomial_product(const std::vector<ball>& a, const std::vector<ball>& b, std::size_t k) {
+  ball s;
+  const std::size_t terms = std::min(k + 1, a.size());
+  arb_dot(s.get(), nullptr, 0, a[0].get(), 1, b[k].get(), -1, static_cast<slong>(terms), ball_bits());
   return s;
 }
 
