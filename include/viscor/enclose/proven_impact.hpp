@@ -103,17 +103,18 @@ struct s_system {
     for (std::size_t i = 0; i < 4; ++i) c[i][0] = x[i];
     std::vector<ball> reciprocal(order);  // 1/v
     const ball sign(static_cast<long>(direction));
+    const slong prec = ball_bits();
     for (std::size_t n = 0; n < order; ++n) {
       reciprocal[n] = series::quotient(ball(n == 0 ? 1 : 0), reciprocal, c[1], n);
       ball dv = series::polynomial_product(force, reciprocal, n);
       if (n < damping.size()) dv -= damping[n];
       const ball dtau = series::polynomial_product(jacobian, reciprocal, n);
       const ball dD = 2 * series::polynomial_product(damping, c[1], n);
-      const ball next(static_cast<long>(n + 1));
+      const slong next = static_cast<slong>(direction) * static_cast<slong>(n + 1);  // d/dsigma = direction d/ds
       c[0][n + 1] = n == 0 ? sign : ball(0);
-      c[1][n + 1] = sign * dv / next;
-      c[2][n + 1] = sign * dtau / next;
-      c[3][n + 1] = sign * dD / next;
+      arb_div_si(c[1][n + 1].get(), dv.get(), next, prec);
+      arb_div_si(c[2][n + 1].get(), dtau.get(), next, prec);
+      arb_div_si(c[3][n + 1].get(), dD.get(), next, prec);
     }
     return c;
   }
@@ -131,22 +132,26 @@ struct tau_system {
     ball_jet c(3, std::vector<ball>(order + 1));
     for (std::size_t i = 0; i < 3; ++i) c[i][0] = x[i];
     std::vector<ball> spring(order), damping_power(order), damped_v(order), scratch;
-    const ball beta_minus_one = k->beta - 1;
+    const ball two_gamma_beta = 2 * k->gamma_beta;
+    const slong prec = ball_bits();
     for (std::size_t n = 0; n < order; ++n) {
-      damping_power[n] = k->beta_is_one ? ball(n == 0 ? 1 : 0) : series::power(c[0], damping_power, beta_minus_one, n, scratch);
+      // u^(beta-1) and u^alpha with the exponents (Q beta - Q)/Q and Q alpha/Q.
+      damping_power[n] =
+          k->beta_is_one ? ball(n == 0 ? 1 : 0) : series::power(c[0], damping_power, k->Q_beta - k->Q, k->Q, n, scratch);
       if (k->spring_shift == 0)
         spring[n] = damping_power[n];
       else if (k->spring_shift == 1)
         spring[n] = series::product(damping_power, c[0], n);  // u^alpha = u u^(beta - 1)
       else
-        spring[n] = series::power(c[0], spring, k->alpha, n, scratch);
+        spring[n] = series::power(c[0], spring, k->Q_alpha, k->Q, n, scratch);
       damped_v[n] = series::product(damping_power, c[1], n);  // u^(beta-1) v
       ball dv = -spring[n] - k->gamma_beta * damped_v[n];
       if (n == 0) dv += k->g;
-      const ball next(static_cast<long>(n + 1));
-      c[0][n + 1] = c[1][n] / next;
-      c[1][n + 1] = dv / next;
-      c[2][n + 1] = 2 * k->gamma_beta * series::product(damped_v, c[1], n) / next;
+      const slong next = static_cast<slong>(n + 1);
+      arb_div_si(c[0][n + 1].get(), c[1][n].get(), next, prec);
+      arb_div_si(c[1][n + 1].get(), dv.get(), next, prec);
+      const ball dD = two_gamma_beta * series::product(damped_v, c[1], n);
+      arb_div_si(c[2][n + 1].get(), dD.get(), next, prec);
     }
     return c;
   }
