@@ -126,6 +126,10 @@ class first_maximum {
   /// Feeds the next step; dv(state) encloses v' over a ball of states.
   template <class Derivative>
   void add(const step_enclosure& step, std::size_t u, std::size_t v, Derivative dv) {
+    // v proven positive over the whole step: every piece below would be passed over
+    // (each piece's state lies in the step's range), so skip the 64 evaluations
+    // (they were a tenth of a proof's time).
+    if (!m_started && step.range[v].positive()) return;
     constexpr long pieces = 64;  // a power of two: the piece ends k h / 64 are exact
     for (long k = 0; k < pieces && !m_done; ++k) {
       const ball from = step.h * ball(k) / ball(pieces), to = step.h * ball(k + 1) / ball(pieces);
