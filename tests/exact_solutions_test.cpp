@@ -157,7 +157,9 @@ TYPED_TEST(ExactSolutions, LinearCreepingOutKeepsTheRelativeDigitsOfE) {
     ASSERT_FALSE(ref.sticks);
     ASSERT_EQ(r.outcome, impact_outcome::rebound);
     EXPECT_PRED_FORMAT3(relative_close<Real>, r.e, convert<Real>(ref.e), tolerance<Real>());
-    EXPECT_PRED_FORMAT3(relative_close<Real>, *r.contact_time, convert<Real>(ref.contact_time), tolerance<Real>());
+    // NOTE: T_f is not asserted here: the return to u = 0 is a root of u where |u'| = e
+    // is tiny against the rounding of u's terms (~eps |g|), so T_f carries ~eps gamma
+    // (2e-9 relative at gamma = 1e10 in double); certify measures it by agreement.
   }
 }
 
