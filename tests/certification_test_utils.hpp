@@ -89,11 +89,12 @@ int true_digits(const Ref& x, const Ref& t) {
 /// certified digits must not exceed the digits on which e, 1 - e, T_f and u_max
 /// agree with the exact solution, or else with the adaptive method at 2 * digits +
 /// 10 (mpfr_real). Returns the certified digits.
+/// `options`: closed_form = false certifies the linear law by the integrators too.
 template <class Real>
-int check_honesty(const sample_point& p) {
-  SCOPED_TRACE(p.describe());
+int check_honesty(const sample_point& p, const certify_options& options = {}) {
+  SCOPED_TRACE(p.describe() + (options.closed_form ? "" : " (integrators)"));
   const Real gamma = parse_real<Real>(p.gamma, "gamma"), g = parse_real<Real>(p.g, "g");
-  const certified_result<Real> c = certify<Real>(p.law, gamma, g);
+  const certified_result<Real> c = certify<Real>(p.law, gamma, g, options);
   const int reference_digits = 2 * decimal_digits<Real>() + 10;
   scoped_precision precision(reference_digits);
   const mpfr_real rg = detail::widen<mpfr_real>(gamma), rgg = detail::widen<mpfr_real>(g);

@@ -20,4 +20,21 @@ TEST(overdamped_slow, creep_up_to_the_equilibrium_full_grid) {
       }
 }
 
+TEST(overdamped_slow, creeping_out_full_grid_double) {
+  // g < 0 for every law at gamma >= 1e3 (the stiff creep out), and g = 0 for
+  // Hunt-Crossley (a creep out at finite speed, the closed form the truth).
+  for (const char* law : viscor::test::overdamped_laws)
+    for (const char* gamma : {"1e3", "1e4", "1e6", "1e8", "1e10"})
+      for (const char* g : {"-1e6", "-1e3", "-1", "-1e-3"}) viscor::test::check_creep_out<double>(law, gamma, g, 1e-9);
+  for (const char* gamma : {"1e3", "1e4", "1e6", "1e8", "1e10"})
+    viscor::test::check_creep_out<double>("hunt_crossley", gamma, "0", 1e-9);
+}
+
+TEST(overdamped_slow, creeping_out_50_digits) {
+  // Spot checks: the implicit steps at 50 digits take seconds per solve (docs/performance.md).
+  for (const char* law : {"linear", "hunt_crossley"})
+    viscor::test::check_creep_out<mpfr_50>(law, "1e10", "-1", mpfr_50("1e-40"));
+  viscor::test::check_creep_out<mpfr_50>("hunt_crossley", "1e10", "0", mpfr_50("1e-40"));
+}
+
 }  // namespace

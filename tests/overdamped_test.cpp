@@ -35,4 +35,13 @@ TEST(overdamped, creep_up_to_the_equilibrium_is_a_proven_stick_50_digits) {
       for (const char* g : {"1", "1e9"}) viscor::test::check_creep_up<mpfr_50>(law, gamma, g);
 }
 
+TEST(overdamped, creeping_out_is_a_rebound_both_methods_agree_double) {
+  // g < 0 for every law, g = 0 for Hunt-Crossley (alpha + 1 < 2 beta: no barrier to a
+  // creep into u = 0; the closed form gives e ~ 1/(2.5 gamma)).
+  for (const char* law : viscor::test::overdamped_laws)
+    for (const char* gamma : {"1e4", "1e10"})
+      for (const char* g : {"-1e6", "-1", "-1e-3"}) viscor::test::check_creep_out<double>(law, gamma, g, 1e-9);
+  for (const char* gamma : {"1e4", "1e10"}) viscor::test::check_creep_out<double>("hunt_crossley", gamma, "0", 1e-9);
+}
+
 }  // namespace

@@ -36,6 +36,11 @@ FORBIDDEN_PAIRS = [
     ("impact/taylor_impact.hpp", "ode/adaptive_integrator.hpp"),
     ("impact/adaptive_impact.hpp", "ode/taylor_integrator.hpp"),
     ("impact/adaptive_impact.hpp", "impact/detail/impact_systems.hpp"),
+    ("impact/adaptive_impact.hpp", "ode/radau_integrator.hpp"),  # the Taylor solver's stiff steps
+    ("ode/radau_integrator.hpp", "ode/adaptive_integrator.hpp"),
+    ("impact/taylor_impact.hpp", "ode/lobatto_integrator.hpp"),  # the GBS solver's stiff steps
+    ("ode/lobatto_integrator.hpp", "ode/radau_integrator.hpp"),
+    ("ode/radau_integrator.hpp", "ode/lobatto_integrator.hpp"),
 ]
 TOP_LEVEL_OK = {"viscor.hpp", "config.hpp.in"}
 INCLUDE = re.compile(r'^\s*#\s*include\s*[<"]viscor/([^>"]+)[>"]', re.M)

@@ -21,6 +21,16 @@
 //
 // Near the sticking threshold e -> 0 and its relative digits fall (e ~ sqrt of the
 // distance to the threshold); absolute digits of e are reported as well.
+//
+// Where the linear law's closed form applies (alpha = beta = 1: every gamma and g,
+// exact/exact_linear.hpp) the closed form is the independent check instead of the
+// two integrators (issue 18 item 8): it is evaluated at the working precision and
+// at the reference precision, the values reported are the reference's, and the
+// certified digits are their agreement minus the margin. The formula's loss of
+// digits to its conditioning (about log10(g) at large g) shows in that agreement,
+// and it costs microseconds at any gamma and g, where the integrators face a stiff
+// creep at large gamma. certify_options::closed_form = false asks for the
+// integrators anyway (tests of the integrators' certification).
 #pragma once
 
 #include <viscor/impact/adaptive_impact.hpp>
@@ -33,6 +43,8 @@
 #include <viscor/core/real_io.hpp>
 #include <viscor/core/real_types.hpp>
 #include <viscor/core/widen.hpp>
+#include <viscor/exact/exact_linear.hpp>
+#include <viscor/exact/exact_solutions.hpp>
 #include <viscor/impact/taylor_impact.hpp>
 
 #include <boost/math/special_functions/fpclassify.hpp>
@@ -49,7 +61,7 @@
 namespace viscor {
 
 /// Which computation a certificate entry is.
-enum class certified_source { taylor, taylor_reference, adaptive };
+enum class certified_source { taylor, taylor_reference, adaptive, closed_form, closed_form_reference };
 
 /// The source's name as written in tables and JSON.
 inline std::string_view to_string(certified_source s) {
@@ -57,6 +69,8 @@ inline std::string_view to_string(certified_source s) {
     case certified_source::taylor: return "taylor";
     case certified_source::taylor_reference: return "taylor (reference precision)";
     case certified_source::adaptive: return "adaptive";
+    case certified_source::closed_form: return "closed form";
+    case certified_source::closed_form_reference: return "closed form (reference precision)";
   }
   return "?";
 }
@@ -68,6 +82,9 @@ struct certify_options {
   /// detail::reference_digits<Real>() = working + max(5, working/20), in a fixed-precision
   /// mpfr type (fast); any other value runs the reference in mpfr_real at that precision.
   int reference_digits = 0;
+  /// Where the linear law's closed form applies, certify it (at the working and the
+  /// reference precision) instead of running the two integrators (header comment).
+  bool closed_form = true;
 };
 
 /// One contributing computation, as a reader would audit it.
@@ -239,6 +256,88 @@ void certify_against_reference(const contact_law& law, const Real& gamma, const 
 
 namespace detail {
 
+// An optional quantity of a closed form, NaN when absent (agreement_digits gives 0 for NaN).
+template <class Real>
+Real or_nan(const std::optional<Real>& x) {
+  return x ? *x : std::numeric_limits<Real>::quiet_NaN();
+}
+
+// The closed-form path (header comment): x is the linear law's closed form at the
+// working precision; the reference evaluation and every comparison run in Ref.
+template <class Ref, class Real>
+void certify_closed_form_against_reference(const Real& gamma, const Real& g, const certify_options& options,
+                                           const certify_perturbation& perturbation, int reference,
+                                           unsigned caller_digits, const exact_result<Real>& x,
+                                           certified_result<Real>& out) {
+  const int working = out.working_digits;
+  Ref ref_gamma = widen<Ref>(gamma);
+  if (perturbation.which == certified_source::closed_form_reference)
+    ref_gamma *= 1 + parse_real<Ref>(perturbation.relative, "perturbation");
+  const Ref ref_g = widen<Ref>(g);
+  double seconds = 0;
+  const exact_result<Ref> ref = timed([&] { return exact_linear<Ref>(ref_gamma, ref_g); }, seconds);
+  const Ref ref_time = or_nan(ref.contact_time), ref_u_max = or_nan(ref.max_compression);
+  certified_computation<Real> entry;
+  entry.source = certified_source::closed_form_reference;
+  entry.precision_digits = reference;
+  entry.outcome = ref.outcome;
+  entry.e = narrow<Real>(ref.e, caller_digits);
+  entry.one_minus_e = narrow<Real>(ref.one_minus_e, caller_digits);
+  entry.contact_time = narrow<Real>(ref_time, caller_digits);
+  entry.max_compression = narrow<Real>(ref_u_max, caller_digits);
+  entry.e_text = to_decimal_string(ref.e), entry.one_minus_e_text = to_decimal_string(ref.one_minus_e);
+  entry.contact_time_text = to_decimal_string(ref_time);
+  entry.seconds = seconds;
+  entry.digits_e = entry.digits_one_minus_e = entry.digits_contact_time = reference;
+  entry.digits_max_compression = entry.absolute_digits_e = reference;
+  out.computations.push_back(entry);
+
+  out.outcome = ref.outcome;
+  out.e = entry.e, out.one_minus_e = entry.one_minus_e;
+  out.contact_time = entry.contact_time, out.max_compression = entry.max_compression;
+  out.outcome_certified = x.outcome == ref.outcome;
+
+  certified_computation<Real>& c = out.computations.front();
+  const Ref one = 1;
+  c.digits_e = agreement_digits(widen<Ref>(x.e), ref.e, ref.e, working);
+  c.absolute_digits_e = agreement_digits(widen<Ref>(x.e), ref.e, one, working);
+  c.digits_one_minus_e = agreement_digits(widen<Ref>(x.one_minus_e), ref.one_minus_e, ref.one_minus_e, working);
+  c.digits_contact_time = agreement_digits(widen<Ref>(or_nan(x.contact_time)), ref_time, ref_time, working);
+  c.digits_max_compression = agreement_digits(widen<Ref>(or_nan(x.max_compression)), ref_u_max, ref_u_max, working);
+  if (x.outcome == impact_outcome::stick && ref.outcome == impact_outcome::stick)
+    c.digits_e = c.digits_one_minus_e = c.absolute_digits_e = working;  // e = 0, 1 - e = 1 exactly
+  out.digits_e = c.digits_e, out.digits_one_minus_e = c.digits_one_minus_e;
+  out.digits_contact_time = c.digits_contact_time, out.digits_max_compression = c.digits_max_compression;
+  const int agreement =
+      std::min({out.digits_e, out.digits_one_minus_e, out.digits_contact_time, out.digits_max_compression});
+  out.digits = std::max(0, agreement - options.safety_margin);
+  out.absolute_digits_e = std::max(0, c.absolute_digits_e - options.safety_margin);
+  out.near_sticking = !out.outcome_certified || (ref.outcome == impact_outcome::rebound && ref.e < Ref(1) / 1000);
+  if (!out.outcome_certified) out.digits = 0, out.absolute_digits_e = 0;
+}
+
+// Runs f.template operator()<Ref>(reference digits) in certify's reference type for
+// Real: the fixed-precision type, or mpfr_real at options.reference_digits.
+template <class Real, class F>
+void in_reference_type(const certify_options& options, int reference, int working, F f) {
+  using Ref = typename certify_reference<Real>::type;
+  if (options.reference_digits > 0 || std::is_same_v<Ref, mpfr_real>) {
+    scoped_precision precision(reference);
+    // Run-time precision: check what static_assert checks for the fixed types.
+    if (decimal_digits<mpfr_real>() < reference || decimal_digits<mpfr_real>() <= working)
+      throw precision_unavailable("certify: the reference precision (" + std::to_string(decimal_digits<mpfr_real>()) +
+                                  " digits) is not wider than the working precision (" + std::to_string(working) +
+                                  " digits)");
+    f.template operator()<mpfr_real>(reference);
+  } else {
+    f.template operator()<Ref>(decimal_digits<Ref>());
+  }
+}
+
+}  // namespace detail
+
+namespace detail {
+
 /// certify with one computation deliberately wrong (a test seam, see
 /// detail/perturbation.hpp); certify itself calls it with no perturbation.
 template <class Real>
@@ -267,6 +366,24 @@ certified_result<Real> certify_perturbed(const contact_law& law, const Real& gam
   out.working_digits = working;
   out.safety_margin = options.safety_margin;
   double seconds = 0;
+  if (options.closed_form && closed_form_for(law, gamma == 0, g == 0) == closed_form::linear) {
+    const exact_result<Real> x =
+        timed([&] { return exact_linear<Real>(perturbed(certified_source::closed_form, gamma), g); }, seconds);
+    certified_computation<Real> c;
+    c.source = certified_source::closed_form;
+    c.precision_digits = working;
+    c.outcome = x.outcome;
+    c.e = x.e, c.one_minus_e = x.one_minus_e;
+    c.contact_time = or_nan(x.contact_time), c.max_compression = or_nan(x.max_compression);
+    c.e_text = to_decimal_string(x.e), c.one_minus_e_text = to_decimal_string(x.one_minus_e);
+    c.contact_time_text = to_decimal_string(c.contact_time);
+    c.seconds = seconds;
+    out.computations.push_back(c);
+    in_reference_type<Real>(options, reference, working, [&]<class Ref>(int digits) {
+      certify_closed_form_against_reference<Ref>(gamma, g, options, perturbation, digits, caller_digits, x, out);
+    });
+    return out;
+  }
   const impact_result<Real> taylor = timed(
       [&] { return solve_impact_taylor<Real>(law, perturbed(certified_source::taylor, gamma), g, solve_options<Real>{}); },
       seconds);
@@ -278,20 +395,9 @@ certified_result<Real> certify_perturbed(const contact_law& law, const Real& gam
       seconds);
   out.computations.push_back(record(certified_source::adaptive, working, adaptive, seconds));
 
-  using Ref = typename certify_reference<Real>::type;
-  if (options.reference_digits > 0 || std::is_same_v<Ref, mpfr_real>) {
-    scoped_precision precision(reference);
-    // Run-time precision: check what static_assert checks for the fixed types.
-    if (decimal_digits<mpfr_real>() < reference || decimal_digits<mpfr_real>() <= working)
-      throw precision_unavailable("certify: the reference precision (" + std::to_string(decimal_digits<mpfr_real>()) +
-                                  " digits) is not wider than the working precision (" + std::to_string(working) +
-                                  " digits)");
-    certify_against_reference<mpfr_real>(law, gamma, g, options, perturbation, reference, caller_digits, taylor,
-                                         adaptive, out);
-  } else {
-    certify_against_reference<Ref>(law, gamma, g, options, perturbation, decimal_digits<Ref>(), caller_digits, taylor,
-                                   adaptive, out);
-  }
+  in_reference_type<Real>(options, reference, working, [&]<class Ref>(int digits) {
+    certify_against_reference<Ref>(law, gamma, g, options, perturbation, digits, caller_digits, taylor, adaptive, out);
+  });
   return out;
 #endif
 }

@@ -60,8 +60,30 @@ struct linear_oscillator {
   }
   Real slow_root() const { return -1 / (xi + root_lambda); }
   Real fast_root() const { return -(xi + root_lambda); }
-  Real u(const Real& t) const { return g - g * damped_c(t) + (1 - xi * g) * damped_s(t); }
-  Real du(const Real& t) const { return damped_c(t) + (g - xi) * damped_s(t); }
+  // NOTE: strongly overdamped, u' = C + (g - xi) S cancels: its slow part has the
+  // coefficient (1 + (g - xi)/s)/2, a difference of two numbers near 1 when the bead
+  // creeps out (g < 0, large gamma: e ~ |g|/gamma, all digits lost at gamma = 1e10).
+  // In the roots r1 = slow, r2 = fast (r1 r2 = 1, r1 - r2 = 2 s) the coefficients are
+  //   u  = g + (1 + g r2)/(2s) e^{r1 t} - (1 + g r1)/(2s) e^{r2 t},
+  //   u' = (g + r1)/(2s) e^{r1 t} - (g + r2)/(2s) e^{r2 t},
+  // each a sum of like-signed terms for g <= 0 (issue 18 item 8).
+  bool by_roots() const { return lambda < 0 && root_lambda >= Real(1) / 2; }
+  Real u(const Real& t) const {
+    using std::exp;
+    if (by_roots()) {
+      const Real r1 = slow_root(), r2 = fast_root(), two_s = 2 * root_lambda;
+      return g + (1 + g * r2) / two_s * exp(r1 * t) - (1 + g * r1) / two_s * exp(r2 * t);
+    }
+    return g - g * damped_c(t) + (1 - xi * g) * damped_s(t);
+  }
+  Real du(const Real& t) const {
+    using std::exp;
+    if (by_roots()) {
+      const Real r1 = slow_root(), r2 = fast_root(), two_s = 2 * root_lambda;
+      return (g + r1) / two_s * exp(r1 * t) - (g + r2) / two_s * exp(r2 * t);
+    }
+    return damped_c(t) + (g - xi) * damped_s(t);
+  }
   // int_0^T u'^2 dt for lambda > 0: with omega = sqrt(lambda), K = (g - xi)/omega,
   // u'^2 = e^{-2 xi t} [(1+K^2)/2 + (1-K^2)/2 cos(2 omega t) + K sin(2 omega t)].
   Real dissipation_integral(const Real& T) const {

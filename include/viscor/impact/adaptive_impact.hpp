@@ -36,7 +36,9 @@
 // Undecided (impact_outcome::undecided, contact_time NaN): what the solver cannot
 // prove at its working precision: g = 0 with e <= sqrt(2E) below the tolerance but
 // no barrier, or a state at rest to half the precision without a trapping sector
-// or an energy proven negative (a turn back, if any, is below the precision).
+// or an energy proven negative (a turn back, if any, is below the precision); or a
+// stiff creep past maximal compression that the steps cannot follow in reasonable
+// time (creep_out_of_reach), with e bounded by the energy.
 // A non-finite state or derivative at the start of a GBS step is an error
 // (convergence_error), not a step to retry.
 //
@@ -51,6 +53,7 @@
 #pragma once
 
 #include <viscor/ode/adaptive_integrator.hpp>
+#include <viscor/ode/lobatto_integrator.hpp>
 #include <viscor/core/contact_law.hpp>
 #include <viscor/core/exceptions.hpp>
 #include <viscor/core/impact_result.hpp>
@@ -63,6 +66,7 @@
 #include <cstdint>
 #include <limits>
 #include <numeric>
+#include <optional>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -268,12 +272,14 @@ struct tau_result {
 enum class exit_outcome {
   done,         ///< s = 0 reached: y = (T_f, -e, D) at u = 0
   back_to_tau,  ///< v came too close to 0 again: the tau mode takes over at `end`
+  undecided,    ///< a stiff creep out of reach of the steps (creep_out_of_reach)
 };
 
 template <class W>
 struct exit_result {
   exit_outcome outcome = exit_outcome::done;
   s_point<W> end;  ///< done: s = 0 (or the series' end point) with y at u = 0
+  W error = 0;     ///< undecided: the energy bound on e
 };
 
 /// The adaptive solve in the work type W. eps_e: absolute tolerance on e (Real's epsilon).
@@ -327,6 +333,11 @@ class adaptive_impact_solver {
         return r;
       }
       const exit_result<W> x = exit_in_s(t.end);
+      if (x.outcome == exit_outcome::undecided) {
+        r.outcome = impact_outcome::undecided;
+        r.contact_time = std::numeric_limits<W>::quiet_NaN(), r.error = x.error, r.steps = m_steps;
+        return r;
+      }
       if (x.outcome == exit_outcome::done) {
         r.e = -x.end.y[1], r.D = x.end.y[2], r.contact_time = x.end.y[0], r.steps = m_steps;
         return r;
@@ -439,6 +450,17 @@ class adaptive_impact_solver {
       }
       if (m_law.g == 0 && creeps_into_origin(at.z[0], at.z[1])) {
         out.outcome = tau_outcome::creeps, out.contact_time = inf;
+        break;
+      }
+      if (creep_out_of_reach(p, v, p.u() / abs(v) / h)) {
+        // g <= 0: no turn back is possible (u'' = g - u^alpha < 0 at v = 0): implicit steps
+        const std::optional<tau_point<W>> crept = m_law.g <= 0 ? creep_implicitly(at) : std::nullopt;
+        if (crept) {
+          at = *crept;
+          out.outcome = tau_outcome::leaves;
+          break;
+        }
+        out.outcome = tau_outcome::undecided, out.contact_time = nan, out.error = energy_bound_on_e(v, p);
         break;
       }
       const W energy = m_law.energy(v, p);
@@ -577,7 +599,111 @@ class adaptive_impact_solver {
         out.outcome = exit_outcome::back_to_tau;
         return out;
       }
+      typename regularised_law<W>::powers q;
+      m_law.eval(p.s, q);
+      const W v = m_law.velocity(p.y[1], q);
+      using std::abs;
+      if (creep_out_of_reach(q, v, p.s / abs(h))) {
+        const std::optional<tau_point<W>> crept = m_law.g <= 0 ? creep_implicitly(to_tau(p)) : std::nullopt;
+        if (!crept) {
+          out.outcome = exit_outcome::undecided, out.error = energy_bound_on_e(v, q);
+          return out;
+        }
+        p = to_s(*crept);
+        h = -p.s / 8;
+        if (!m_law.rational) s_end = series_end_point(p.y[1]);
+      }
     }
+  }
+
+  // Issue 18 item 8: past maximal compression with strong damping the bead moves along
+  // the slow manifold v ~ (g - u^alpha)/(gamma beta u^(beta-1)), over a time u/|v| far
+  // longer than the damping time 1/(gamma beta u^(beta-1)) that bounds the GBS steps
+  // (in tau, and in s as well): a stiff motion. Called once per accepted step past
+  // maximal compression with the state's powers p, its velocity v and the number of
+  // steps still to go at the current step (remaining distance over step); true when,
+  // after creep_min_steps such steps, the motion is stiff (ratio above 1000) and more
+  // than creep_step_limit steps are still to go: the solve then ends as undecided at
+  // once, instead of exhausting the budget (linear law, gamma = 1e10, g = -1).
+  bool creep_out_of_reach(const typename regularised_law<W>::powers& p, const W& v, const W& steps_to_go) {
+    using std::abs;
+    constexpr std::size_t creep_min_steps = 256;
+    const W creep_step_limit = 20000;
+    if (++m_creep_steps <= creep_min_steps || !(v < 0) || !(m_law.gamma > 0)) return false;
+    const W damping_time = 1 / (m_law.gamma_beta * p.ub1());
+    const W slow_time = p.u() / abs(v);
+    return slow_time > 1000 * damping_time && steps_to_go > creep_step_limit;
+  }
+
+  // The stiff creep out (g <= 0, past maximal compression, v < 0) by Lobatto IIIC
+  // (ode/lobatto_integrator.hpp; s = max(3, digits/3 + 2) stages, order 2s - 2), with
+  // the overlap u as the independent variable (u falls monotonically: v < 0 throughout,
+  // as u'' = g - u^alpha < 0 wherever v = 0) and states (tau, v, D), carried as
+  // y = (u, tau, v, D) with u' = 1:
+  //   dtau/du = 1/v,  dv/du = (g - u^alpha)/v - gamma beta u^(beta-1),  dD/du = v u^(beta-1),
+  // until the motion is no longer stiff: the damping time 1/(gamma beta u^(beta-1))
+  // exceeds the slow time u/|v|. NOTE: v, not w = v + gamma u^beta: on the creep |v| is
+  // far below gamma u^beta, and v = w - gamma u^beta would lose the digits of that ratio.
+  // Returns the tau-mode state there, or nothing if the steps fail (then undecided).
+  std::optional<tau_point<W>> creep_implicitly(const tau_point<W>& from) {
+    using std::abs;
+    using std::pow;
+    using vec = std::array<W, 4>;
+    const W& a = m_law.alpha;
+    const W& b = m_law.beta;
+    const int stages = std::max(3, decimal_digits<W>() / 3 + 2);
+    // NOTE: the step-doubling difference carries rounding of a few ulps: a tolerance
+    // below 32 ulps would shrink the steps to underflow.
+    const W floor = 32 * epsilon<W>();
+    lobatto_integrator<W, 4> lobatto(stages, m_rtol > floor ? m_rtol : floor);
+    auto f = [&](const vec& y, vec& d) {
+      if (!(y[0] > 0) || !(y[2] < 0)) return false;
+      const W ub1 = pow(y[0], b - 1);
+      d[0] = 1;
+      d[1] = 1 / y[2];
+      d[2] = (m_law.g - pow(y[0], a)) / y[2] - m_law.gamma_beta * ub1;
+      d[3] = y[2] * ub1;
+      return true;
+    };
+    auto jacobian = [&](const vec& y, std::array<vec, 4>& J) {
+      const W u = y[0], v = y[2];
+      const W ub2 = pow(u, b - 2), ua1 = pow(u, a - 1);
+      const W zero = 0;
+      J[0] = vec{zero, zero, zero, zero};
+      J[1] = vec{zero, zero, W(-1 / (v * v)), zero};
+      J[2] = vec{W(-a * ua1 / v - m_law.gamma_beta * (b - 1) * ub2), zero, W(-(m_law.g - ua1 * u) / (v * v)), zero};
+      J[3] = vec{W(v * (b - 1) * ub2), zero, W(ub2 * u), zero};
+    };
+    typename regularised_law<W>::powers q;
+    m_law.eval(from.z[0], q);
+    vec y{q.u(), from.tau, m_law.velocity(from.z[1], q), from.z[2]};
+    W h = -y[0] / 64, taken = 0;
+    for (;;) {
+      if (!(y[2] < 0)) return std::nullopt;  // cannot happen for g <= 0: the steps went wrong
+      const W damping = m_law.gamma_beta * pow(y[0], b - 1);
+      if (damping * y[0] <= abs(y[2])) {
+        // hand back in the tau mode's variables: s = u^(1/Q), w = v + gamma u^beta
+        const W s = m_law.Q == 1 ? y[0] : W(pow(y[0], 1 / W(m_law.Q)));
+        return tau_point<W>{y[1], {s, W(y[2] + m_law.gamma * pow(y[0], b)), y[3]}};
+      }
+      if (-h > y[0] / 2) h = -y[0] / 2;  // the stages stay in u >= u/2 > 0
+      const vec scales{y[0], abs(y[1]), abs(y[2]), abs(y[3]) > 0 ? abs(y[3]) : W(1)};
+      step_guard(h, y[0]);
+      if (!lobatto.step(f, jacobian, y, h, scales, taken)) continue;
+      m_error += m_rtol * abs(y[2]);
+    }
+  }
+
+  // e <= sqrt(2E): E = v^2/2 + u^(alpha+1)/(alpha+1) - g u never increases and is
+  // e^2/2 at u = 0; E is raised by its rounding and the error carried in w (as in
+  // energy_proven_negative), and the bound doubled.
+  W energy_bound_on_e(const W& v, const typename regularised_law<W>::powers& p) const {
+    using std::abs;
+    using std::sqrt;
+    const W terms = v * v / 2 + p.ua() * p.u() * m_law.inv_alpha_plus_one + abs(m_law.g) * p.u();
+    const W margin = 64 * (epsilon<W>() * terms + m_error * (abs(v) + abs(p.ua() - m_law.g) + 1));
+    const W two_E = 2 * (m_law.energy(v, p) + margin);
+    return 2 * sqrt(two_E > 0 ? two_E : W(0));
   }
 
   // ---- the end points for real exponents ----
@@ -876,6 +1002,7 @@ class adaptive_impact_solver {
   // Bookkeeping over the whole solve (each means one thing throughout).
   std::size_t m_max_steps, m_steps = 0;  // step budget and steps taken
   int m_switches = 0;                    // tau -> s -> tau round trips
+  std::size_t m_creep_steps = 0;         // steps past maximal compression (creep_out_of_reach)
   W m_error = 0;                         // accumulated error estimate of w
   gbs_integrator<W, 3> m_s_int, m_t_int;
   std::string m_where;

@@ -53,6 +53,14 @@
 // follow: linear law, gamma = 1.9999, g = 0.5 turns at tau = 316). stop_overlap is
 // the turning point u_s, or the rest position u_eq (0 for g = 0).
 //
+// 2c. implicit_creep, issue 18 item 8: past maximal compression a strongly damped
+//    bead can creep along the slow manifold for far longer than the damping time that
+//    bounds the Taylor steps (stiff_creep). For g <= 0 (no turn back is possible) the
+//    creep is followed by the L-stable Radau IIA method (ode/radau_integrator.hpp)
+//    until the exit test of phase 2 holds. For g > 0, or if those steps fail, the solve
+//    ends at once as undecided, with error_estimate a bound on e from the energy,
+//    which never increases: e <= sqrt(2E).
+//
 // The GBS solver (adaptive_impact.hpp) makes its own exit, barrier and energy
 // arguments on purpose: the two solvers share no phase code (a shared proof
 // would be a shared blind spot).
@@ -65,12 +73,15 @@
 #include <viscor/core/real_io.hpp>
 #include <viscor/core/real_types.hpp>
 #include <viscor/impact/detail/impact_systems.hpp>
+#include <viscor/ode/radau_integrator.hpp>
 #include <viscor/ode/taylor_integrator.hpp>
 
 #include <boost/math/constants/constants.hpp>
 #include <boost/math/special_functions/fpclassify.hpp>
 #include <boost/math/tools/precision.hpp>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -103,6 +114,7 @@ enum class time_outcome {
   turns_back,  ///< v = 0 again with u > 0: the bead sticks at the turning point
   rests,       ///< a sticking proof holds (time_phase_end::proof)
   undamped,    ///< gamma = 0: time-reversible, e = 1 exactly
+  stiff_creep,  ///< creeping out on the slow manifold, out of reach of explicit steps: undecided
 };
 
 template <class Real>
@@ -111,6 +123,7 @@ struct time_phase_end {
   contact_state<Real> state{};  ///< where the phase ended (unused for undamped)
   sticking_proof proof = sticking_proof::none;  ///< for rests
   bool past_max_compression = false;
+  bool at_contact_end = false;  ///< leaves: the state is already at u = 0 (implicit_creep landed there)
   /// tau and u at maximal compression (+infinity and u_eq when the bead rests before it)
   Real tau_max = 0, u_max = 0;
 };
@@ -198,6 +211,20 @@ class taylor_impact_solver {
               at_rest && around.past_max_compression);
         return finish(result);
       }
+      case time_outcome::stiff_creep: {
+        // NOTE: E = v^2/2 + u^(alpha+1)/(alpha+1) - g u never increases and is e^2/2 at
+        // u = 0, so e <= sqrt(2E); E is taken with the error the steps carry (choose_e's rule).
+        using std::pow;
+        using std::sqrt;
+        const state& at = around.state;
+        const Real two_E = at.v * at.v + 2 * pow(at.u, m_c.alpha_plus_one) / m_c.alpha_plus_one - 2 * m_c.g * at.u;
+        const Real carried = Real(m_steps) * m_tol * m_speed_scale * m_speed_scale;
+        result.outcome = impact_outcome::undecided;
+        result.e = 0, result.one_minus_e = 1, result.energy_residual = 0;
+        result.contact_time = std::numeric_limits<Real>::quiet_NaN();
+        result.error_estimate = 2 * sqrt(Real((two_E > 0 ? two_E : Real(0)) + carried));
+        return finish(result);
+      }
       case time_outcome::leaves:
       case time_outcome::spirals:
         break;
@@ -210,8 +237,11 @@ class taylor_impact_solver {
       spiral = spiral_phase(spiral_int, around.state, around.u_max);
     }
     Real* spiral_error = spiral ? &spiral->error : nullptr;
-    state end = way_out(end_int, spiral ? spiral->scaled : around.state, spiral_error);
-    if (!m_c.use_root_variable) end = close_by_series(end);
+    state end = around.state;
+    if (!around.at_contact_end) {
+      end = way_out(end_int, spiral ? spiral->scaled : around.state, spiral_error);
+      if (!m_c.use_root_variable) end = close_by_series(end);
+    }
     if (spiral) end = unscale_spiral(end, *spiral);
     const restitution<Real> e = choose_e(end, spiral_error);
     result.outcome = impact_outcome::rebound;
@@ -307,6 +337,7 @@ class taylor_impact_solver {
     std::vector<Real> y{from.u, from.v, from.D}, y1(3);
     Real tau = from.tau;
     time_phase_end<Real> end;
+    std::size_t creep_steps = 0;  // steps since maximal compression
     for (;;) {
       const Real h = time_step(integ, tau, y, y1, !end.past_max_compression);
       count_step();
@@ -356,6 +387,20 @@ class taylor_impact_solver {
           end.outcome = time_outcome::spirals;
           return end;
         }
+        if (++creep_steps > m_creep_min_steps) m_crept = true;  // a long creep: see choose_e
+        if (creep_steps > m_creep_min_steps && stiff_creep(end.state, h)) {
+          // g <= 0: the bead cannot turn back (u'' = g - u^alpha < 0 at v = 0), so no
+          // event is missed by the implicit steps; g > 0 is left undecided.
+          const std::optional<state> out = m_c.g <= 0 ? implicit_creep(end.state, end.u_max) : std::nullopt;
+          if (!out) {
+            end.outcome = time_outcome::stiff_creep;
+            return end;
+          }
+          end.state = *out;
+          end.at_contact_end = out->u == 0;
+          end.outcome = time_outcome::leaves;
+          return end;
+        }
       }
     }
   }
@@ -402,6 +447,110 @@ class taylor_impact_solver {
     if (m_c.g > 0) lhs += 4 * m_c.g * s.u;
     return lhs <= V * V;
   }
+
+  // Phase 2, issue 18 item 8: after maximal compression with strong damping the bead
+  // creeps out (or in) along the slow manifold v ~ (g - u^alpha)/(gamma beta u^(beta-1))
+  // over the slow time u/|v|, while the steps stay bounded by the fast damping time
+  // 1/(gamma beta u^(beta-1)): a stiff motion. When that ratio exceeds 1000 and the
+  // steps still needed at the current step h and speed, (u/|v|)/h, exceed
+  // m_creep_step_limit, the solve ends as undecided now, rather than exhausting the
+  // step budget or running for minutes (linear law, gamma = 1e10, g = -1: ~1e10 steps).
+  bool stiff_creep(const state& s, const Real& h) const {
+    using std::abs;
+    using std::pow;
+    if (!(s.v < 0) || m_c.gamma == 0) return false;
+    const Real slow_time = s.u / abs(s.v);
+    const Real damping = m_c.beta_is_one ? m_c.gamma_beta : Real(m_c.gamma_beta * pow(s.u, m_c.beta - 1));
+    return slow_time * damping > 1000 && slow_time > h * m_creep_step_limit;
+  }
+
+  // ---- phase 2c: the stiff creep out, g <= 0 (issue 18 item 8) ----
+  // Takes the state where stiff_creep held (past maximal compression, v < 0) and
+  // u_max; integrates (u, v, D) in tau by Radau IIA (ode/radau_integrator.hpp, order
+  // 2s - 1 with s = max(3, (digits + 2)/3) stages) until the exit test of phase 2
+  // holds, and returns that state; nothing if the steps fail (a step shorter than the
+  // rounding of tau): the solve is then undecided.
+  std::optional<state> implicit_creep(const state& from, const Real& u_max) {
+    using std::abs;
+    using std::pow;
+    const auto& c = m_c;
+    using vec = std::array<Real, 3>;
+    const int stages = std::max(3, (decimal_digits<Real>() + 2) / 3);
+    // NOTE: the step-doubling difference carries rounding of a few ulps: a tolerance
+    // below 16 ulps would shrink the steps to nothing.
+    const Real floor = 16 * epsilon<Real>();
+    radau_integrator<Real, 3> radau(stages, m_tol > floor ? m_tol : floor);
+    Real damping, u_a, u_b2;  // scratch: gamma beta u^(beta-1), u^(alpha-1), u^(beta-2)
+    auto powers = [&](const Real& u) {
+      u_a = c.alpha_is_one ? Real(1) : Real(pow(u, c.alpha - 1));
+      u_b2 = c.beta_is_one ? Real(1 / u) : Real(pow(u, c.beta - 2));
+      damping = c.gamma_beta * u_b2 * u;
+    };
+    auto f = [&](const vec& y, vec& d) {
+      if (!(y[0] > 0)) return false;
+      powers(y[0]);
+      d[0] = y[1];
+      d[1] = c.g - u_a * y[0] - damping * y[1];
+      d[2] = 2 * damping * y[1] * y[1];
+      return true;
+    };
+
+    auto jacobian = [&](const vec& y, std::array<vec, 3>& J) {
+      powers(y[0]);
+      const Real damping_slope = c.gamma_beta * (c.beta - 1) * u_b2;  // d/du of gamma beta u^(beta-1)
+      J[0] = vec{Real(0), Real(1), Real(0)};
+      J[1] = vec{Real(-c.alpha * u_a - damping_slope * y[1]), Real(-damping), Real(0)};
+      J[2] = vec{Real(2 * damping_slope * y[1] * y[1]), Real(4 * damping * y[1]), Real(0)};
+    };
+    vec y{from.u, from.v, from.D};
+    Real tau = from.tau, h = from.u / abs(from.v) / 64, taken = 0;
+    // Landing: past the exit test, where the endpoint series would overflow, the creep
+    // is followed on to u = 0 (endpoint_series_overflow).
+    bool landing = false;
+    for (;;) {
+      const vec scales{abs(y[0]), abs(y[1]), abs(y[2]) > 0 ? abs(y[2]) : Real(1)};
+      // NOTE: at most half the slow time u/|v| per step: u falls at most about
+      // halfway, and the way out does not start at a u too tiny for its steps.
+      const Real cap = y[0] / (2 * abs(y[1]));
+      if (h > cap) h = cap;
+      count_step();
+      if (!radau.try_step(f, jacobian, y, h, scales, taken)) {
+        if (!(h > 64 * epsilon<Real>() * abs(tau))) return std::nullopt;
+        continue;
+      }
+      tau += taken;
+      note_speed(y[1]);
+      const state here{y[0], y[1], tau, y[2]};
+      if (!(y[1] < 0)) return std::nullopt;  // cannot happen for g <= 0: the steps went wrong
+      if (!landing && leaves_without_turning(here, u_max)) {
+        if (!endpoint_series_overflow(here)) return here;
+        landing = true;
+      }
+      if (landing) {
+        // On towards u = 0, u about halving per step (the cap above), until the
+        // rest of the way, u/|v| in time, changes v and D by less than tol relative
+        // to first order (their rates times u/|v|); then the first-order close.
+        vec d;
+        f(y, d);
+        const Real rest = y[0] / abs(y[1]);
+        if (abs(d[1]) * rest <= m_tol * abs(y[1]) && abs(d[2]) * rest <= m_tol * abs(y[2]))
+          return state{Real(0), Real(y[1] + d[1] * rest), Real(tau + rest), Real(y[2] + d[2] * rest)};
+      }
+    }
+  }
+
+  // Whether the endpoint system's jet about this state would overflow Real: its
+  // coefficients grow like |v|/s^k, s = u^(1/Q) (linear law in double at gamma = 1e10,
+  // g = -1: the creep ends at u ~ 1e-21, and |v|/s^20 ~ 1e410).
+  bool endpoint_series_overflow(const state& at) const {
+    using std::abs;
+    using std::log;
+    if (!m_c.use_root_variable) return false;  // sigma = ln u: scale-free
+    const Real log_s = log(at.u) / Real(m_c.Q);
+    const Real p = Real(taylor_order(m_tol));
+    return log(abs(at.v)) - p * log_s > boost::math::tools::log_max_value<Real>() * 3 / 4;  // to spare
+  }
+
 
   // Phase 2 -> 2b: entered after maximal compression once r = v/u^c <= -1/(2 sqrt c).
   bool enters_spiral(const state& s) const {
@@ -587,7 +736,13 @@ class taylor_impact_solver {
     }
     // NOTE: e_D is used only where it resolves e (1 - D above its error): near
     // e = 0 it is the square root of rounding noise, while e_v may still be right.
-    if (err_D <= err_v && one_minus_D > d_D) {
+    // NOTE: after a long creep (over m_creep_min_steps steps past maximal compression,
+    // or phase 2c) e is small and D, summed over the creep, resolves e^2 = 1 - D only
+    // to the sum of its steps' errors (linear law, gamma = 1e3, g = -1e-3: e = 1e-6
+    // from D was off by 2e-4 relative), while the trajectory keeps v to relative
+    // precision: there e_v is taken below e = 1/2.
+    const bool trajectory_better = m_crept && e_v <= Real(1) / 2;
+    if (err_D <= err_v && one_minus_D > d_D && !trajectory_better) {
       // 1 - e = D / (1 + e): full relative precision as gamma -> 0.
       out.source = e_source::dissipated_energy;
       out.one_minus_e = end.D / (1 + e_D);
@@ -778,8 +933,13 @@ class taylor_impact_solver {
   // only once u < m_switch_overlap * u_max (away from the turning point, which
   // limits the sigma steps, as u = 0 limits the tau steps).
   const Real m_switch_speed = Real(4) / 5, m_switch_overlap = Real(1) / 2;
+  // The stiff-creep test (stiff_creep) runs after m_creep_min_steps steps past maximal
+  // compression (the fast transient has died) and gives up at m_creep_step_limit steps to go.
+  const std::size_t m_creep_min_steps = 256;
+  const Real m_creep_step_limit = 20000;
   // Accumulated by every phase, one meaning throughout:
   std::size_t m_steps = 0;  // steps taken so far (budget: m_options.max_steps)
+  bool m_crept = false;     // a long creep past maximal compression: choose_e prefers the trajectory
   Real m_speed_scale = 1;   // largest |v| seen so far in original units: the scale of the local errors
 };
 
