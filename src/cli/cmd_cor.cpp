@@ -201,7 +201,8 @@ void setup(CLI::App& app) {
       ->capture_default_str()
       ->check(CLI::Range(1.0, 1e12));
   app.add_flag("--certify", cmd->certify,
-               "certify the digits: Taylor at two precisions and the independent adaptive method must agree");
+               "certify the digits: Taylor at two precisions and the independent adaptive method must agree "
+               "(the linear law: its closed form at two precisions)");
   app.add_flag("--prove", cmd->prove,
                "also prove the digits: enclosures of e, 1 - e, T_f and u_max in ball arithmetic at --digits "
                "(rational exponents; docs/proofs.md)");

@@ -61,7 +61,8 @@ json method_provenance(const table_spec& table) {
     const certify_options defaults;
     j["certify"] = {
         {"computations", "taylor at the working precision; taylor at the reference precision; adaptive (GBS) at "
-                         "the working precision"},
+                         "the working precision (the linear law: its closed form at the working and the reference "
+                         "precision)"},
         {"reference_digits",
          with_working_precision(spec.digits, []<class Real>() { return viscor::detail::reference_digits<Real>(); })},
         {"safety_margin", defaults.safety_margin},

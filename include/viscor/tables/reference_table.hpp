@@ -44,7 +44,8 @@ inline std::string to_string(row_source s) { return s == row_source::exact ? "ex
 inline std::string describe(row_source s) {
   return s == row_source::exact ? "exact closed form evaluated at the working precision (viscor::exact_cor); "
                                   "certified digits = working digits - 2"
-                                : "viscor::certify: Taylor and adaptive integrators at two precisions";
+                                : "viscor::certify: Taylor and adaptive integrators at two precisions (the linear law: its closed form at "
+                                  "two precisions)";
 }
 
 /// One row of a CoR table, every number as a decimal string rounded to its
