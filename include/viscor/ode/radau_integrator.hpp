@@ -138,6 +138,7 @@ class radau_integrator {
   /// s stages (order 2s - 1); tolerance: the scaled error allowed per step.
   radau_integrator(int stages, const Real& tolerance) : m_tab(stages), m_tol(tolerance) {}
 
+  /// The number of stages s (order 2s - 1).
   int stages() const { return m_tab.s; }
   /// The scaled error estimate of the last step tried.
   const Real& last_error() const { return m_error; }
