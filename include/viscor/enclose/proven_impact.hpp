@@ -6,6 +6,7 @@
 //   in   s from 0 (exactly) while v stays >= 1/4:      states (s, v, tau, D)
 //   mid  tau through the maximal compression:           states (u, v, D)
 //   out  s down to 0 (exactly) once one s-step reaches:  states (s, v, tau, D)
+//        (back to tau if the s-steps crawl: a turn back at small u > 0)
 //
 // In s (J = du/ds = Q s^(Q-1); every power of s below is a polynomial):
 //   dv/ds   = (g J - Q s^(Q(alpha+1)-1)) / v - gamma beta Q s^(Q beta-1),
@@ -31,7 +32,9 @@
 //
 // Outcomes: rebound (v proven negative over every step of the way out, so the
 // first return to u = 0 is the end of the last step); stick when E is proven
-// negative (E never increases and E >= 0 at u = 0, so the bead never gets back);
+// negative after a step in tau or in s (E never increases and E >= 0 at u = 0, so
+// the bead never gets back), or at g = 0 when the state enters a trap that keeps
+// u > 0 for ever (detail::trapped: laws with alpha + 1 >= 2 beta);
 // undecided otherwise (a step that cannot be validated, the bead grazing u = 0, a
 // creep at g = 0 that no argument here traps, or the step budget spent).
 // proven_linear.hpp proves the linear law by a separate, simpler integration in
@@ -178,6 +181,25 @@ inline ball acceleration(const impact_ball_constants& k, const std::vector<ball>
   return k.g - spring - k.gamma_beta * damping * x[1];
 }
 
+/// At g = 0 with kappa = alpha + 1 - 2 beta >= 0 (the linear law, Hertz with linear
+/// damping, Tsuji), whether the state (u, v) lies in the trap
+///   T = { u > 0, -c u^beta < v < 0, beta gamma^2 / 4 > u^kappa },  c = gamma / 2,
+/// which the bead never leaves and in which it never reaches u = 0: a stick. Why: on
+/// the face v = -c u^beta, d/dtau (v + c u^beta) = u^(2 beta - 1) (beta gamma^2/4 -
+/// u^kappa) > 0, so the flow enters T there; on v = 0, v' = -u^alpha < 0; u falls
+/// (v < 0), so the last condition is kept; and u' = v > -c u^beta keeps u > 0 for
+/// ever (u >= u0 exp(-c tau) for beta = 1, algebraic decay for beta > 1). At kappa = 0
+/// the last condition is gamma > 2/sqrt(beta), the critical damping of the linear
+/// law and of Tsuji's exact solution at g = 0. `trap_applies` is false otherwise.
+inline bool trapped(const impact_ball_constants& k, bool trap_applies, const ball& u, const ball& v) {
+  if (!trap_applies || !u.positive() || !v.negative()) return false;
+  const ball kappa = k.alpha + 1 - 2 * k.beta;
+  ball u_beta, u_kappa;
+  arb_pow(u_beta.get(), u.get(), k.beta.get(), proofs::ball_bits());
+  arb_pow(u_kappa.get(), u.get(), kappa.get(), proofs::ball_bits());
+  return (v + k.gamma / 2 * u_beta).positive() && (k.beta * k.gamma * k.gamma / 4 - u_kappa).positive();
+}
+
 inline ball root(const ball& u, long Q) {
   ball s;
   arb_root_ui(s.get(), u.get(), static_cast<ulong>(Q), proofs::ball_bits());
@@ -237,6 +259,14 @@ inline proven_impact prove_impact(const contact_law& law, std::string_view gamma
     result.how = std::move(why);
     return result;
   };
+  auto stick = [&result](std::string why) {
+    result.outcome = proven_outcome::stick;
+    result.e = ball(0), result.one_minus_e = ball(1);
+    result.how = std::move(why);
+    return result;
+  };
+  // g = 0 exactly and alpha + 1 >= 2 beta: the trap of detail::trapped exists.
+  const bool trap_applies = arb_is_zero(k.g.get()) && k.Q_alpha + k.Q >= 2 * k.Q_beta && k.gamma.positive();
   const ball quarter = ball(1) / ball(4), three_quarters = ball(3) / ball(4);
 
   // The way in: s from 0 while v >= 1/4 over the whole step; on to tau once v < 3/4
@@ -256,58 +286,75 @@ inline proven_impact prove_impact(const contact_law& law, std::string_view gamma
     if (!(x[1] - three_quarters).positive()) break;
   }
 
-  // Through the maximal compression in tau, until one s-step reaches a tenth of
-  // the way to s = 0 (near u = 0 the tau-series converge slowly).
+  // Through the maximal compression in tau, then out in s; back to tau when the
+  // s-steps crawl (see below).
   tau_system mid{&k};
-  std::vector<ball> y{pow(x[0], static_cast<unsigned long>(k.Q)), x[1], x[3]};  // u, v, D
-  ball tau = x[2];
   s_system out{&k, -1};
-  first_maximum turning;  // u_max: v falls through 0 in this phase (v >= 1/4 before, v < 0 after)
-  memory = {};
+  first_maximum turning;  // u_max: v falls through 0 in tau (v >= 1/4 before, v < 0 after)
+  ball tau = x[2];
+  ball_jet out_jet;
   for (;;) {
-    if (++result.steps > options.max_steps) return undecided("step budget exhausted in tau");
-    const auto step = find_step(mid, mid.jet(y, order), order, log2_tolerance, memory, options.max_halvings,
-                                [](const step_enclosure& st) { return st.range[0].positive(); });
-    if (!step) return undecided("no validated step in tau at tau = " + tau.mid_str(10));
-    turning.add(*step, 0, 1, [&k](const std::vector<ball>& state) { return detail::acceleration(k, state); });
-    result.max_compression = turning.value();
-    y = step->state_at(step->h);
-    tau = tau + step->h;
-    if (detail::energy(k, y[0], y[1]).negative()) {
-      result.outcome = proven_outcome::stick;
-      result.e = ball(0), result.one_minus_e = ball(1);
-      result.how = "energy proven negative at tau = " + tau.mid_str(10);
-      return result;
+    // In tau, until one s-step reaches a tenth of the way to s = 0 (near u = 0 the
+    // tau-series converge slowly).
+    std::vector<ball> y{pow(x[0], static_cast<unsigned long>(k.Q)), x[1], x[3]};  // u, v, D
+    memory = {};
+    for (;;) {
+      if (++result.steps > options.max_steps) return undecided("step budget exhausted in tau");
+      const auto step = find_step(mid, mid.jet(y, order), order, log2_tolerance, memory, options.max_halvings,
+                                  [](const step_enclosure& st) { return st.range[0].positive(); });
+      if (!step) return undecided("no validated step in tau at tau = " + tau.mid_str(10));
+      turning.add(*step, 0, 1, [&k](const std::vector<ball>& state) { return detail::acceleration(k, state); });
+      result.max_compression = turning.value();
+      y = step->state_at(step->h);
+      tau = tau + step->h;
+      if (detail::energy(k, y[0], y[1]).negative()) return stick("energy proven negative at tau = " + tau.mid_str(10));
+      if (detail::trapped(k, trap_applies, y[0], y[1]))
+        return stick("trapped at g = 0 (-gamma u^beta / 2 < v < 0) at tau = " + tau.mid_str(10));
+      if (!y[1].negative()) continue;
+      x = {detail::root(y[0], k.Q), y[1], tau, y[2]};
+      out_jet = out.jet(x, order);  // the way out's first jet, if the switch is made
+      if (proposed_step(out_jet, order, log2_tolerance) >= x[0].mid_double() / 10) break;
     }
-    if (!y[1].negative()) continue;
-    x = {detail::root(y[0], k.Q), y[1], tau, y[2]};
-    if (proposed_step(out.jet(x, order), order, log2_tolerance) >= x[0].mid_double() / 10) break;
-  }
 
-  // The way out: s down to 0, with v < 0 over every step. The last step is as long
-  // as the upper bound of s, and ends where sigma = s0: s = 0 exactly.
-  memory = {};
-  for (;;) {
-    if (++result.steps > options.max_steps) return undecided("step budget exhausted on the way out");
-    const ball_jet jet = out.jet(x, order);
-    const ball s_upper = detail::upper_bound(x[0]);
-    if (proposed_step(jet, order, log2_tolerance) >= s_upper.mid_double()) {
-      const step_enclosure last = validated_step(out, jet, s_upper, order);
-      if (last.validated && last.tight(log2_tolerance) && last.range[1].negative()) {
-        const std::vector<ball> end = last.state_at(x[0]);
-        result.outcome = proven_outcome::rebound;
-        result.e = -end[1];
-        result.contact_time = end[2];
-        result.one_minus_e = end[3] / (1 + result.e);
-        result.how = "s reaches 0 with v < 0 over the last step";
-        if (!result.e.positive()) return undecided("e not proven > 0");
-        return result;
+    // The way out: s down to 0, with v < 0 over every step. The last step is as long
+    // as the upper bound of s, and ends where sigma = s0: s = 0 exactly. Next to the
+    // sticking threshold the bead turns back at a small u > 0: v -> 0 there, dv/ds
+    // grows like 1/v and the s-steps shrink towards that point without reaching it
+    // (it took 10,000 steps). So when a step covers less than 1/64 of s, the proof
+    // goes back to tau, where v = 0 is a regular point and the energy soon proves
+    // the stick (or, if v stays negative, the s-steps lengthen again).
+    memory = {};
+    bool crawling = false, first_out_step = true;
+    while (!crawling) {
+      if (++result.steps > options.max_steps) return undecided("step budget exhausted on the way out");
+      const ball_jet jet = first_out_step ? std::move(out_jet) : out.jet(x, order);
+      first_out_step = false;
+      const ball s_upper = detail::upper_bound(x[0]);
+      if (proposed_step(jet, order, log2_tolerance) >= s_upper.mid_double()) {
+        const step_enclosure last = validated_step(out, jet, s_upper, order);
+        if (last.validated && last.tight(log2_tolerance) && last.range[1].negative()) {
+          const std::vector<ball> end = last.state_at(x[0]);
+          result.outcome = proven_outcome::rebound;
+          result.e = -end[1];
+          result.contact_time = end[2];
+          result.one_minus_e = end[3] / (1 + result.e);
+          result.how = "s reaches 0 with v < 0 over the last step";
+          if (!result.e.positive()) return undecided("e not proven > 0");
+          return result;
+        }
       }
+      const auto step = find_step(out, jet, order, log2_tolerance, memory, options.max_halvings,
+                                  [](const step_enclosure& st) { return st.range[1].negative() && st.range[0].positive(); });
+      if (!step) return undecided("no validated step on the way out (v near 0?)");
+      x = step->state_at(step->h);
+      tau = x[2];
+      const ball u = pow(x[0], static_cast<unsigned long>(k.Q));
+      if (detail::energy(k, u, x[1]).negative())
+        return stick("energy proven negative on the way out at tau = " + tau.mid_str(10));
+      if (detail::trapped(k, trap_applies, u, x[1]))
+        return stick("trapped at g = 0 (-gamma u^beta / 2 < v < 0) on the way out at tau = " + tau.mid_str(10));
+      crawling = step->h.mid_double() < x[0].mid_double() / 64;
     }
-    const auto step = find_step(out, jet, order, log2_tolerance, memory, options.max_halvings,
-                                [](const step_enclosure& st) { return st.range[1].negative() && st.range[0].positive(); });
-    if (!step) return undecided("no validated step on the way out (v near 0?)");
-    x = step->state_at(step->h);
   }
 }
 
