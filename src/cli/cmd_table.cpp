@@ -75,7 +75,7 @@ json method_provenance(const table_spec& table) {
         {"what", "viscor::enclose (include/viscor/enclose/, docs/proofs.md) on the exact decimal gamma and g of each "
                  "certified row: validated Taylor integration in Arb ball arithmetic"},
         {"digits", proof_digits(spec.digits)},
-        {"ball_bits", "ceil(digits log2 10) + 64"},
+        {"ball_bits", "ceil(digits log2 10) + 24, rounded up to a multiple of 64"},
         {"columns", "e_lower <= e <= e_upper and one_minus_e_lower <= 1 - e <= one_minus_e_upper (decimals rounded "
                     "outwards); proven_digits: the correctly rounded digits of e on which both bounds agree (at most "
                     "digits); outcome_proven: rebound, stick, or undecided (empty bounds, 0 digits)"},

@@ -230,8 +230,14 @@ inline ball pow(const ball& x, unsigned long n) {
   return r;
 }
 
-/// The bits a proof at `digits` decimal digits works with: the digits plus guard
-/// bits that absorb the widening of the enclosure over an impact (measured: docs/proofs.md).
-inline slong working_bits(int digits) { return static_cast<slong>(std::ceil(digits * 3.3219280948873623)) + 64; }
+/// The bits a proof at `digits` decimal digits works with: the digits plus at least
+/// 24 guard bits, rounded up to whole 64-bit limbs. The guard bits absorb the widening
+/// of the enclosure over an impact (about 15-21 bits, measured: docs/proofs.md); a
+/// part-used limb costs as much as a full one, and Arb is fastest at one or two limbs,
+/// so 30 digits work in 128 bits (with 64 guard bits they took 192: 2x slower).
+inline slong working_bits(int digits) {
+  const slong needed = static_cast<slong>(std::ceil(digits * 3.3219280948873623)) + 24;
+  return (needed + 63) / 64 * 64;
+}
 
 }  // namespace viscor::proofs
