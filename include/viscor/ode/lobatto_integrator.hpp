@@ -182,8 +182,9 @@ class lobatto_integrator {
   /// Decompose the Newton matrix in double first when Real is wider than long double
   /// (default on); off: always in Real.
   void use_double_decomposition(bool on) { m_try_ld = on; }
-  /// Stage solves done with the coarse decomposition / with the one in Real.
+  /// Stage solves done with the double decomposition.
   std::size_t double_solves() const { return m_ld_count; }
+  /// Stage solves done with the decomposition in Real.
   std::size_t full_precision_solves() const { return m_full_count; }
 
   /// A step of h from y, error relative to `scales`. True: y advanced by `taken` = h

@@ -187,14 +187,17 @@ class radau_integrator {
   /// Whether the iteration matrix is factored in double first (default: where Real
   /// is wider than long double). False: always in Real (the reference path).
   void set_low_precision_lu(bool on) { m_low_allowed = on; }
+  /// Whether collocations start with the double LU (set_low_precision_lu and Real's width).
   bool low_precision_lu() const {
     return m_low_allowed && binary_digits<Real>() > std::numeric_limits<long double>::digits;
   }
   /// Collocations solved with the double LU, and those solved with the Real LU.
   std::size_t low_precision_solves() const { return m_low_solves; }
+  /// Collocations solved with the LU in Real (the reference path, or after the double one failed).
   std::size_t real_precision_solves() const { return m_real_solves; }
   /// Newton iterations over all collocations, and the matrices rebuilt at the stages.
   std::size_t newton_iterations() const { return m_iterations; }
+  /// Matrices rebuilt from the Jacobians at the stages (slow contraction).
   std::size_t matrix_refreshes() const { return m_refreshes; }
 
   /// One step from y over h (> 0 or < 0), scales[i] > 0 the size of component i that
