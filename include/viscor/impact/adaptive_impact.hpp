@@ -656,18 +656,47 @@ class adaptive_impact_solver {
     // below 32 ulps would shrink the steps to underflow.
     const W floor = 32 * epsilon<W>();
     lobatto_integrator<W, 4> lobatto(stages, m_rtol > floor ? m_rtol : floor);
+    // u^x for the four exponents used below. NOTE: when 2 alpha and 2 beta are whole
+    // (every named law but Tsuji) and for Tsuji's 4 beta, from sqrt(u), sqrt(sqrt(u))
+    // and products rather than pow (exp of log): pow was a third of a 50-digit creep.
+    struct root_power {
+      int quarters = 0;  // x = quarters / 4
+      bool exact = false;
+    };
+    auto plan = [](const W& x) {
+      using std::floor;
+      root_power r;
+      const W q = x * 4;
+      r.exact = q == floor(q) && q >= -64 && q <= 64;
+      if (r.exact) r.quarters = static_cast<int>(q);
+      return r;
+    };
+    const root_power p_b1 = plan(b - 1), p_a = plan(a), p_b2 = plan(b - 2), p_a1 = plan(a - 1);
+    auto raise = [](const W& u, const W& x, const root_power& r) -> W {
+      using std::sqrt;
+      if (!r.exact) return pow(u, x);
+      int k = r.quarters < 0 ? -r.quarters : r.quarters;
+      W out = 1;
+      if (k % 4 != 0) {
+        const W half = sqrt(u);
+        if (k % 4 >= 2) out = half;
+        if (k % 2 != 0) out *= sqrt(half);
+      }
+      for (k /= 4; k > 0; --k) out *= u;
+      return r.quarters < 0 ? W(1 / out) : out;
+    };
     auto f = [&](const vec& y, vec& d) {
       if (!(y[0] > 0) || !(y[2] < 0)) return false;
-      const W ub1 = pow(y[0], b - 1);
+      const W ub1 = raise(y[0], b - 1, p_b1);
       d[0] = 1;
       d[1] = 1 / y[2];
-      d[2] = (m_law.g - pow(y[0], a)) / y[2] - m_law.gamma_beta * ub1;
+      d[2] = (m_law.g - raise(y[0], a, p_a)) / y[2] - m_law.gamma_beta * ub1;
       d[3] = y[2] * ub1;
       return true;
     };
     auto jacobian = [&](const vec& y, std::array<vec, 4>& J) {
       const W u = y[0], v = y[2];
-      const W ub2 = pow(u, b - 2), ua1 = pow(u, a - 1);
+      const W ub2 = raise(u, b - 2, p_b2), ua1 = raise(u, a - 1, p_a1);
       const W zero = 0;
       J[0] = vec{zero, zero, zero, zero};
       J[1] = vec{zero, zero, W(-1 / (v * v)), zero};

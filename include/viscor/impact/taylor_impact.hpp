@@ -481,9 +481,35 @@ class taylor_impact_solver {
     const Real floor = 16 * epsilon<Real>();
     radau_integrator<Real, 3> radau(stages, m_tol > floor ? m_tol : floor);
     Real damping, u_a, u_b2;  // scratch: gamma beta u^(beta-1), u^(alpha-1), u^(beta-2)
+    // NOTE: exponents that are multiples of 1/4 (every named law) from square roots
+    // and products, a few roundings instead of pow's exp and log: 36% of a 50-digit
+    // creep was in pow (Hunt-Crossley, gamma = 1e6, g = -1e-3).
+    auto in_quarters = [](const Real& p) -> int {
+      using std::floor;
+      const Real q = 4 * p;
+      return q == floor(q) && abs(q) <= 64 ? static_cast<int>(q) : std::numeric_limits<int>::min();
+    };
+    const int qa = in_quarters(c.alpha - 1), qb = in_quarters(c.beta - 2);
+    const bool by_roots = qa != std::numeric_limits<int>::min() && qb != std::numeric_limits<int>::min();
+    const bool fourth_root = by_roots && ((qa % 2) != 0 || (qb % 2) != 0);
+    auto quarter_power = [](const Real& u, const Real& r2, const Real& r4, int k) -> Real {
+      const int m = k < 0 ? -k : k;
+      Real x = 1;
+      for (int i = 0; i < m / 4; ++i) x *= u;
+      if (m % 4 >= 2) x *= r2;
+      if (m % 2 == 1) x *= r4;
+      return k < 0 ? Real(1 / x) : x;
+    };
     auto powers = [&](const Real& u) {
-      u_a = c.alpha_is_one ? Real(1) : Real(pow(u, c.alpha - 1));
-      u_b2 = c.beta_is_one ? Real(1 / u) : Real(pow(u, c.beta - 2));
+      using std::sqrt;
+      if (by_roots) {
+        const Real r2 = sqrt(u), r4 = fourth_root ? Real(sqrt(r2)) : Real(0);
+        u_a = quarter_power(u, r2, r4, qa);
+        u_b2 = quarter_power(u, r2, r4, qb);
+      } else {
+        u_a = c.alpha_is_one ? Real(1) : Real(pow(u, c.alpha - 1));
+        u_b2 = c.beta_is_one ? Real(1 / u) : Real(pow(u, c.beta - 2));
+      }
       damping = c.gamma_beta * u_b2 * u;
     };
     auto f = [&](const vec& y, vec& d) {

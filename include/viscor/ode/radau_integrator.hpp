@@ -10,9 +10,26 @@
 // Gauss-Legendre quadrature, which is exact for it. Zeros are bracketed on a grid in
 // theta = arccos x and refined by bisection to a width of eps.
 // A step solves the collocation equations Z_i = h sum_j a_ij f(y0 + Z_j) by simplified
-// Newton (one LU of I - h A (x) J per step, J the Jacobian at the step's start). The
+// Newton (one LU of I - h A (x) J per collocation, J the Jacobian at the step's start). The
 // error is estimated by step doubling: the step is taken as one step of h and as two of
 // h/2, the two must agree to the tolerance, and the two half steps are kept.
+//
+// Cost (issue 18 item 8; measured at 50 digits, Hertz with linear damping, gamma = 1e6,
+// g = -1: 60% of the solve in the Real LU and its substitutions, s = 17, n = 3s = 51).
+// Three things make it cheap without changing what is computed:
+// - Where Real is wider than long double, the iteration matrix is factored in double
+//   (in the unknowns scaled by |y0|; double, not x87 long double: 48 against 224 us
+//   for n = 51): the residual is still evaluated in Real, and the double solve only
+//   gives the correction (iterative refinement), so Newton converges to the same
+//   collocation solution, at a rate ~ cond(M) eps_double per iteration on top of
+//   the simplified Newton's own. If it does not contract (or the matrix does not fit
+//   double's range), the collocation is redone with the LU in Real.
+// - In that double path, where simplified Newton contracts slowly (a correction
+//   shrinking by less than 1e-6: J changes over a long step), the matrix is rebuilt
+//   from the Jacobians at the current stages (Newton's own matrix, quadratic).
+// - The two half steps start Newton from the full step's collocation polynomial
+//   (interpolated at their nodes: degree s through 0 and the stages), not from the
+//   explicit first-order guess, which saves most of their iterations.
 #pragma once
 
 #include <viscor/core/real_types.hpp>
@@ -22,6 +39,7 @@
 
 #include <array>
 #include <cmath>
+#include <limits>
 #include <cstddef>
 #include <stdexcept>
 #include <utility>
@@ -121,7 +139,28 @@ struct radau_tableau {
         }
         a[static_cast<std::size_t>(i * s + j)] = c[i] / 2 * sum;
       }
+    // The collocation polynomial of a step, Z(t) = sum_j l_j(t) Z_j with l_j the
+    // Lagrange basis on the nodes {0, c_1, .., c_s} (Z(0) = 0), at the stages of the
+    // two half steps: first_half[i][j] = l_j(c_i/2), second_half[i][j] =
+    // l_j((1 + c_i)/2) - l_j(1/2) (the second half starts from Z(1/2)).
+    auto basis = [&](int j, const Real& t) -> Real {
+      Real l = t / c[j];  // the factor of node 0
+      for (int m = 0; m < s; ++m)
+        if (m != j) l *= (t - c[m]) / (c[j] - c[m]);
+      return l;
+    };
+    first_half.resize(a.size());
+    second_half.resize(a.size());
+    for (int i = 0; i < s; ++i)
+      for (int j = 0; j < s; ++j) {
+        const std::size_t k = static_cast<std::size_t>(i * s + j);
+        first_half[k] = basis(j, Real(c[i] / 2));
+        second_half[k] = basis(j, Real((1 + c[i]) / 2)) - basis(j, Real(Real(1) / 2));
+      }
   }
+
+  /// Interpolation of a step's stages to the stages of its half steps (row-major s x s).
+  std::vector<Real> first_half, second_half;
 };
 
 }  // namespace detail
@@ -134,6 +173,8 @@ class radau_integrator {
  public:
   using state = std::array<Real, N>;
   using matrix = std::array<std::array<Real, N>, N>;
+  /// The type the iteration matrix is factored in first (see the header comment).
+  using low_real = double;
 
   /// s stages (order 2s - 1); tolerance: the scaled error allowed per step.
   radau_integrator(int stages, const Real& tolerance) : m_tab(stages), m_tol(tolerance) {}
@@ -142,6 +183,22 @@ class radau_integrator {
   int stages() const { return m_tab.s; }
   /// The scaled error estimate of the last step tried.
   const Real& last_error() const { return m_error; }
+
+  /// Whether the iteration matrix is factored in double first (default: where Real
+  /// is wider than long double). False: always in Real (the reference path).
+  void set_low_precision_lu(bool on) { m_low_allowed = on; }
+  /// Whether collocations start with the double LU (set_low_precision_lu and Real's width).
+  bool low_precision_lu() const {
+    return m_low_allowed && binary_digits<Real>() > std::numeric_limits<long double>::digits;
+  }
+  /// Collocations solved with the double LU, and those solved with the Real LU.
+  std::size_t low_precision_solves() const { return m_low_solves; }
+  /// Collocations solved with the LU in Real (the reference path, or after the double one failed).
+  std::size_t real_precision_solves() const { return m_real_solves; }
+  /// Newton iterations over all collocations, and the matrices rebuilt at the stages.
+  std::size_t newton_iterations() const { return m_iterations; }
+  /// Matrices rebuilt from the Jacobians at the stages (slow contraction).
+  std::size_t matrix_refreshes() const { return m_refreshes; }
 
   /// One step from y over h (> 0 or < 0), scales[i] > 0 the size of component i that
   /// the tolerance is relative to. Accepted: y holds the new state, `taken` the step,
@@ -152,8 +209,14 @@ class radau_integrator {
     using std::pow;
     state full, half, two_halves;
     const Real h2 = h / 2;
-    bool ok = collocate(f, jacobian, y, h, full) && collocate(f, jacobian, y, h2, half) &&
-              collocate(f, jacobian, half, h2, two_halves);
+    bool ok = collocate(f, jacobian, y, h, full, nullptr);
+    if (ok) {
+      // the half steps start from the full step's collocation polynomial
+      interpolate(m_tab.first_half, m_guess_first);
+      interpolate(m_tab.second_half, m_guess_second);
+      ok = collocate(f, jacobian, y, h2, half, &m_guess_first) &&
+           collocate(f, jacobian, half, h2, two_halves, &m_guess_second);
+    }
     if (!ok) {
       m_error = 1 / epsilon<Real>();
       h /= 4;
@@ -181,17 +244,67 @@ class radau_integrator {
     return true;
   }
 
- private:
-  // The collocation solution y1 after one step h from y0; false if Newton fails or a
-  // stage leaves the domain of f.
+  /// One collocation step of h from y0 alone (no error control), into y1; false if
+  /// Newton fails or a stage leaves the domain. For tests of the two LU paths.
   template <class F, class Jac>
-  bool collocate(F& f, Jac& jacobian, const state& y0, const Real& h, state& y1) {
-    using std::abs;
+  bool collocation_step(F& f, Jac& jacobian, const state& y0, const Real& h, state& y1) {
+    return collocate(f, jacobian, y0, h, y1, nullptr);
+  }
+
+ private:
+  enum class newton_end { converged, domain, no_contraction };
+
+  // guess := P Z, P an s x s interpolation matrix of the tableau, Z the last stages.
+  void interpolate(const std::vector<Real>& P, std::vector<Real>& guess) const {
+    const std::size_t s = static_cast<std::size_t>(m_tab.s);
+    guess.assign(s * N, Real(0));
+    for (std::size_t i = 0; i < s; ++i)
+      for (std::size_t j = 0; j < s; ++j) {
+        const Real& w = P[i * s + j];
+        for (std::size_t p = 0; p < N; ++p) guess[i * N + p] += w * m_Z[j * N + p];
+      }
+  }
+
+  // The collocation solution y1 after one step h from y0; false if Newton fails or a
+  // stage leaves the domain of f. guess: the starting stages Z (nullptr: c_i h f(y0)).
+  template <class F, class Jac>
+  bool collocate(F& f, Jac& jacobian, const state& y0, const Real& h, state& y1, const std::vector<Real>* guess) {
     const std::size_t s = static_cast<std::size_t>(m_tab.s), n = s * N;
     matrix J;
     jacobian(y0, J);
     state f0;
     if (!f(y0, f0)) return false;
+    auto start = [&] {
+      if (guess) {
+        m_Z = *guess;
+      } else {
+        m_Z.assign(n, Real(0));
+        for (std::size_t i = 0; i < s; ++i)
+          for (std::size_t p = 0; p < N; ++p) m_Z[i * N + p] = m_tab.c[i] * h * f0[p];
+      }
+    };
+    m_stage_j.assign(1, J);
+    if (low_precision_lu() && factor_low(m_stage_j, h, y0, n)) {
+      start();
+      // Where simplified Newton contracts slowly (J varies over the step), the matrix
+      // is rebuilt from the Jacobians at the current stages (Newton's own matrix).
+      auto refresh = [&]() -> bool {
+        m_stage_j.resize(s);
+        state y;
+        for (std::size_t j = 0; j < s; ++j) {
+          for (std::size_t p = 0; p < N; ++p) y[p] = y0[p] + m_Z[j * N + p];
+          jacobian(y, m_stage_j[j]);
+        }
+        return factor_low(m_stage_j, h, y0, n);
+      };
+      const newton_end end = iterate(f, y0, h, y1, [&] { substitute_low(n); }, refresh);
+      if (end == newton_end::converged) {
+        ++m_low_solves;
+        return true;
+      }
+      if (end == newton_end::domain) return false;
+      // no contraction with the double LU: redo the collocation in Real
+    }
     // M = I - h (A x J), row (i, p), column (j, q): delta - h a_ij J_pq.
     m_lu.assign(n * n, Real(0));
     for (std::size_t i = 0; i < s; ++i)
@@ -205,44 +318,67 @@ class radau_integrator {
           }
       }
     if (!factor(n)) return false;
-    m_Z.assign(n, Real(0));
-    for (std::size_t i = 0; i < s; ++i)
-      for (std::size_t p = 0; p < N; ++p) m_Z[i * N + p] = m_tab.c[i] * h * f0[p];
-    std::vector<state> slopes(s);
+    start();
+    const newton_end end = iterate(f, y0, h, y1, [&] { substitute(n); }, [] { return true; }, false);
+    if (end == newton_end::converged) ++m_real_solves;
+    return end == newton_end::converged;
+  }
+
+  // Simplified Newton from the stages in m_Z; solve() replaces m_r by M^{-1} m_r.
+  // refresh(): rebuild and factor the matrix at the current stages (false: failed);
+  // used, if may_refresh, when a correction shrank by less than 1e-6.
+  template <class F, class Solve, class Refresh>
+  newton_end iterate(F& f, const state& y0, const Real& h, state& y1, Solve solve, Refresh refresh,
+                     bool may_refresh = true) {
+    using std::abs;
+    const std::size_t s = static_cast<std::size_t>(m_tab.s), n = s * N;
+    m_slopes.resize(s);
     state y;
     Real previous = -1;
+    int refreshes = 0;
     const int max_iterations = 16 + binary_digits<Real>() / 8;
+    const Real eps = epsilon<Real>();
     for (int it = 0; it < max_iterations; ++it) {
+      ++m_iterations;
       for (std::size_t j = 0; j < s; ++j) {
         for (std::size_t p = 0; p < N; ++p) y[p] = y0[p] + m_Z[j * N + p];
-        if (!f(y, slopes[j])) return false;
+        if (!f(y, m_slopes[j])) return newton_end::domain;
       }
       // residual r = -Z + h A F
-      m_r.assign(n, Real(0));
+      m_r.resize(n);
       for (std::size_t i = 0; i < s; ++i)
         for (std::size_t p = 0; p < N; ++p) {
           Real sum = 0;
-          for (std::size_t j = 0; j < s; ++j) sum += m_tab.a[i * s + j] * slopes[j][p];
+          for (std::size_t j = 0; j < s; ++j) sum += m_tab.a[i * s + j] * m_slopes[j][p];
           m_r[i * N + p] = h * sum - m_Z[i * N + p];
         }
-      substitute(n);
+      solve();
       Real size = 0;
       for (std::size_t i = 0; i < s; ++i)
         for (std::size_t p = 0; p < N; ++p) {
           m_Z[i * N + p] += m_r[i * N + p];
-          const Real d = abs(m_r[i * N + p]) / (abs(y0[p]) + abs(m_Z[i * N + p]) + epsilon<Real>());
+          const Real d = abs(m_r[i * N + p]) / (abs(y0[p]) + abs(m_Z[i * N + p]) + eps);
           if (!(d <= size)) size = d;
         }
-      if (!boost::math::isfinite(size)) return false;
-      // Converged: corrections below the tolerance, or stalled at the rounding level.
-      if (size <= m_tol / 16 || (it >= 2 && size >= previous / 2 && size <= 64 * epsilon<Real>())) {
+      if (!boost::math::isfinite(size)) return newton_end::no_contraction;
+      // Converged: corrections below the tolerance, or at the rounding level and either
+      // stalled there or shrinking at least 64-fold (then what is left is about an
+      // ulp). NOTE: a laxer early stop (twofold) left noise that the step-doubling
+      // estimate at its 16-ulp floor took for error.
+      if (size <= m_tol / 16 || (it >= 2 && size >= previous / 2 && size <= 64 * eps) ||
+          (it >= 1 && size <= previous / 64 && size <= 64 * eps)) {
         for (std::size_t p = 0; p < N; ++p) y1[p] = y0[p] + m_Z[(s - 1) * N + p];  // stiffly accurate: c_s = 1
-        return true;
+        return newton_end::converged;
       }
-      if (it >= 2 && size > previous) return false;  // diverging: a shorter step
+      if (it >= 2 && size > previous) return newton_end::no_contraction;  // diverging: a shorter step
+      if (may_refresh && previous > 0 && size > previous * Real(1e-6) && refreshes < 4) {
+        ++refreshes;
+        ++m_refreshes;
+        if (!refresh()) return newton_end::no_contraction;
+      }
       previous = size;
     }
-    return false;
+    return newton_end::no_contraction;
   }
 
   // LU with partial pivoting of m_lu (n x n) in place, the row permutation in m_pivot.
@@ -281,11 +417,95 @@ class radau_integrator {
     }
   }
 
+  // M = I - h (A x J) rounded to double and factored as factor() does; false if an
+  // entry does not fit double's range or a pivot vanishes (then the Real LU).
+  // The matrix is that of the scaled unknowns Z_ip / w_p, w_p = |y0_p| (1 where 0):
+  // D^-1 M D with D = diag(w), whose rounding in double does not let the large
+  // components (u against v in the creep) swamp the small ones.
+  // Js: one Jacobian for every stage (size 1), or the Jacobian at each stage (size s:
+  // then M is the exact Jacobian of the collocation equations, column block j at
+  // stage j).
+  bool factor_low(const std::vector<matrix>& Js, const Real& h, const state& y0, std::size_t n) {
+    using std::abs;
+    const std::size_t s = static_cast<std::size_t>(m_tab.s);
+    for (std::size_t p = 0; p < N; ++p) {
+      const low_real w = static_cast<low_real>(abs(y0[p]));
+      m_low_w[p] = std::isfinite(w) && w > 0 ? w : low_real(1);
+    }
+    m_low.assign(n * n, low_real(0));
+    std::vector<std::array<std::array<low_real, N>, N>>& j_low = m_low_j;
+    j_low.resize(Js.size());
+    for (std::size_t k = 0; k < Js.size(); ++k)
+      for (std::size_t p = 0; p < N; ++p)
+        for (std::size_t q = 0; q < N; ++q) {
+          j_low[k][p][q] = static_cast<low_real>(Js[k][p][q]) * m_low_w[q] / m_low_w[p];
+          if (!std::isfinite(j_low[k][p][q])) return false;
+        }
+    if (m_low_a.size() != s * s) {
+      m_low_a.resize(s * s);
+      for (std::size_t k = 0; k < s * s; ++k) m_low_a[k] = static_cast<low_real>(m_tab.a[k]);
+    }
+    const low_real h_low = static_cast<low_real>(h);
+    for (std::size_t i = 0; i < s; ++i)
+      for (std::size_t j = 0; j < s; ++j) {
+        const low_real ha = h_low * m_low_a[i * s + j];
+        const auto& jj = j_low[Js.size() == 1 ? 0 : j];
+        for (std::size_t p = 0; p < N; ++p)
+          for (std::size_t q = 0; q < N; ++q) {
+            low_real& m = m_low[(i * N + p) * n + (j * N + q)];
+            m = -ha * jj[p][q];
+            if (i == j && p == q) m += 1;
+            if (!std::isfinite(m)) return false;
+          }
+      }
+    m_low_pivot.resize(n);
+    for (std::size_t k = 0; k < n; ++k) {
+      std::size_t p = k;
+      for (std::size_t i = k + 1; i < n; ++i)
+        if (std::fabs(m_low[i * n + k]) > std::fabs(m_low[p * n + k])) p = i;
+      m_low_pivot[k] = p;
+      if (!(m_low[p * n + k] != 0) || !std::isfinite(m_low[p * n + k])) return false;
+      if (p != k)
+        for (std::size_t j = 0; j < n; ++j) std::swap(m_low[k * n + j], m_low[p * n + j]);
+      const low_real pivot = m_low[k * n + k];
+      for (std::size_t i = k + 1; i < n; ++i) {
+        const low_real l = m_low[i * n + k] /= pivot;
+        if (l == 0) continue;
+        for (std::size_t j = k + 1; j < n; ++j) m_low[i * n + j] -= l * m_low[k * n + j];
+      }
+    }
+    return true;
+  }
+
+  // m_r := M^{-1} m_r with the double factors of factor_low(): the residual is
+  // rounded to double, solved, and the correction carried back to Real.
+  void substitute_low(std::size_t n) {
+    m_low_r.resize(n);
+    for (std::size_t k = 0; k < n; ++k) m_low_r[k] = static_cast<low_real>(m_r[k]) / m_low_w[k % N];
+    for (std::size_t k = 0; k < n; ++k)
+      if (m_low_pivot[k] != k) std::swap(m_low_r[k], m_low_r[m_low_pivot[k]]);
+    for (std::size_t k = 0; k < n; ++k)
+      for (std::size_t i = k + 1; i < n; ++i) m_low_r[i] -= m_low[i * n + k] * m_low_r[k];
+    for (std::size_t k = n; k-- > 0;) {
+      for (std::size_t j = k + 1; j < n; ++j) m_low_r[k] -= m_low[k * n + j] * m_low_r[j];
+      m_low_r[k] /= m_low[k * n + k];
+    }
+    for (std::size_t k = 0; k < n; ++k) m_r[k] = Real(m_low_r[k] * m_low_w[k % N]);
+  }
+
   detail::radau_tableau<Real> m_tab;
   Real m_tol;
   Real m_error = 0;
-  std::vector<Real> m_lu, m_Z, m_r;
+  std::vector<Real> m_lu, m_Z, m_r, m_guess_first, m_guess_second;
+  std::vector<state> m_slopes;
   std::vector<std::size_t> m_pivot;
+  bool m_low_allowed = true;
+  std::vector<low_real> m_low, m_low_r, m_low_a;
+  std::vector<std::size_t> m_low_pivot;
+  std::array<low_real, N> m_low_w{};
+  std::vector<std::array<std::array<low_real, N>, N>> m_low_j;
+  std::vector<matrix> m_stage_j;
+  std::size_t m_low_solves = 0, m_real_solves = 0, m_iterations = 0, m_refreshes = 0;
 };
 
 }  // namespace viscor
