@@ -381,41 +381,49 @@ class radau_integrator {
     return newton_end::no_contraction;
   }
 
-  // LU with partial pivoting of m_lu (n x n) in place, the row permutation in m_pivot.
-  bool factor(std::size_t n) {
+  // LU with partial pivoting of the n x n row-major matrix a in place, the row
+  // permutation in pivot; false if a pivot is 0 or not finite. One code for the
+  // Real matrix and for its double rounding (factor_low).
+  template <class T>
+  static bool lu_factor(std::vector<T>& a, std::vector<std::size_t>& pivot, std::size_t n) {
     using std::abs;
-    m_pivot.resize(n);
+    pivot.resize(n);
     for (std::size_t k = 0; k < n; ++k) {
       std::size_t p = k;
       for (std::size_t i = k + 1; i < n; ++i)
-        if (abs(m_lu[i * n + k]) > abs(m_lu[p * n + k])) p = i;
-      m_pivot[k] = p;
-      if (m_lu[p * n + k] == 0) return false;
+        if (abs(a[i * n + k]) > abs(a[p * n + k])) p = i;
+      pivot[k] = p;
+      if (!(a[p * n + k] != 0) || !boost::math::isfinite(a[p * n + k])) return false;
       if (p != k)
-        for (std::size_t j = 0; j < n; ++j) std::swap(m_lu[k * n + j], m_lu[p * n + j]);
+        for (std::size_t j = 0; j < n; ++j) std::swap(a[k * n + j], a[p * n + j]);
       for (std::size_t i = k + 1; i < n; ++i) {
-        m_lu[i * n + k] /= m_lu[k * n + k];
-        const Real& factor = m_lu[i * n + k];
-        if (factor == 0) continue;
-        for (std::size_t j = k + 1; j < n; ++j) m_lu[i * n + j] -= factor * m_lu[k * n + j];
+        a[i * n + k] /= a[k * n + k];
+        const T& l = a[i * n + k];
+        if (l == 0) continue;
+        for (std::size_t j = k + 1; j < n; ++j) a[i * n + j] -= l * a[k * n + j];
       }
     }
     return true;
   }
 
-  // m_r := M^{-1} m_r with the factors of factor().
-  void substitute(std::size_t n) {
-    // NOTE: factor() swaps whole rows (the multipliers too), so all the row
-    // interchanges come first, then the unit lower triangle (as LAPACK's getrs).
+  // r := M^{-1} r with the factors of lu_factor. NOTE: lu_factor swaps whole rows
+  // (the multipliers too), so all the row interchanges come first, then the unit
+  // lower triangle (as LAPACK's getrs).
+  template <class T>
+  static void lu_solve(const std::vector<T>& a, const std::vector<std::size_t>& pivot, std::vector<T>& r,
+                       std::size_t n) {
     for (std::size_t k = 0; k < n; ++k)
-      if (m_pivot[k] != k) std::swap(m_r[k], m_r[m_pivot[k]]);
+      if (pivot[k] != k) std::swap(r[k], r[pivot[k]]);
     for (std::size_t k = 0; k < n; ++k)
-      for (std::size_t i = k + 1; i < n; ++i) m_r[i] -= m_lu[i * n + k] * m_r[k];
+      for (std::size_t i = k + 1; i < n; ++i) r[i] -= a[i * n + k] * r[k];
     for (std::size_t k = n; k-- > 0;) {
-      for (std::size_t j = k + 1; j < n; ++j) m_r[k] -= m_lu[k * n + j] * m_r[j];
-      m_r[k] /= m_lu[k * n + k];
+      for (std::size_t j = k + 1; j < n; ++j) r[k] -= a[k * n + j] * r[j];
+      r[k] /= a[k * n + k];
     }
   }
+
+  bool factor(std::size_t n) { return lu_factor(m_lu, m_pivot, n); }
+  void substitute(std::size_t n) { lu_solve(m_lu, m_pivot, m_r, n); }
 
   // M = I - h (A x J) rounded to double and factored as factor() does; false if an
   // entry does not fit double's range or a pivot vanishes (then the Real LU).
@@ -458,23 +466,7 @@ class radau_integrator {
             if (!std::isfinite(m)) return false;
           }
       }
-    m_low_pivot.resize(n);
-    for (std::size_t k = 0; k < n; ++k) {
-      std::size_t p = k;
-      for (std::size_t i = k + 1; i < n; ++i)
-        if (std::fabs(m_low[i * n + k]) > std::fabs(m_low[p * n + k])) p = i;
-      m_low_pivot[k] = p;
-      if (!(m_low[p * n + k] != 0) || !std::isfinite(m_low[p * n + k])) return false;
-      if (p != k)
-        for (std::size_t j = 0; j < n; ++j) std::swap(m_low[k * n + j], m_low[p * n + j]);
-      const low_real pivot = m_low[k * n + k];
-      for (std::size_t i = k + 1; i < n; ++i) {
-        const low_real l = m_low[i * n + k] /= pivot;
-        if (l == 0) continue;
-        for (std::size_t j = k + 1; j < n; ++j) m_low[i * n + j] -= l * m_low[k * n + j];
-      }
-    }
-    return true;
+    return lu_factor(m_low, m_low_pivot, n);
   }
 
   // m_r := M^{-1} m_r with the double factors of factor_low(): the residual is
@@ -482,14 +474,7 @@ class radau_integrator {
   void substitute_low(std::size_t n) {
     m_low_r.resize(n);
     for (std::size_t k = 0; k < n; ++k) m_low_r[k] = static_cast<low_real>(m_r[k]) / m_low_w[k % N];
-    for (std::size_t k = 0; k < n; ++k)
-      if (m_low_pivot[k] != k) std::swap(m_low_r[k], m_low_r[m_low_pivot[k]]);
-    for (std::size_t k = 0; k < n; ++k)
-      for (std::size_t i = k + 1; i < n; ++i) m_low_r[i] -= m_low[i * n + k] * m_low_r[k];
-    for (std::size_t k = n; k-- > 0;) {
-      for (std::size_t j = k + 1; j < n; ++j) m_low_r[k] -= m_low[k * n + j] * m_low_r[j];
-      m_low_r[k] /= m_low[k * n + k];
-    }
+    lu_solve(m_low, m_low_pivot, m_low_r, n);
     for (std::size_t k = 0; k < n; ++k) m_r[k] = Real(m_low_r[k] * m_low_w[k % N]);
   }
 
