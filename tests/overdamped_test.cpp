@@ -44,4 +44,12 @@ TEST(overdamped, creeping_out_is_a_rebound_both_methods_agree_double) {
   for (const char* gamma : {"1e4", "1e10"}) viscor::test::check_creep_out<double>("hunt_crossley", gamma, "0", 1e-9);
 }
 
+TEST(overdamped, creeping_out_at_zero_load_50_digits) {
+  // At 50 digits the adaptive method's implicit creep steps in ln u (adaptive_impact.hpp
+  // creep_implicitly); truth: Hunt-Crossley's closed form, for Kuwabara-Kono the Taylor
+  // solver (the two share no integrator code), to 1e-45 of e ~ 7e-51.
+  viscor::test::check_creep_out<mpfr_50>("hunt_crossley", "1e10", "0", mpfr_50("1e-45"));
+  viscor::test::check_creep_out<mpfr_50>("kuwabara_kono", "1e10", "0", mpfr_50("1e-45"));
+}
+
 }  // namespace

@@ -623,12 +623,16 @@ class adaptive_impact_solver {
   // maximal compression with the state's powers p, its velocity v and the number of
   // steps still to go at the current step (remaining distance over step); true when,
   // after creep_min_steps such steps, the motion is stiff (ratio above 1000) and more
-  // than creep_step_limit steps are still to go: the solve then ends as undecided at
-  // once, instead of exhausting the budget (linear law, gamma = 1e10, g = -1).
+  // than creep_step_limit steps are still to go: the solve then hands the creep to
+  // creep_implicitly (g <= 0) or ends as undecided (g > 0), instead of exhausting the
+  // budget (linear law, gamma = 1e10, g = -1). NOTE: for g <= 0 the limit is 2000:
+  // a 50-digit GBS step costs ~0.4 ms, Tsuji at gamma = 1e2, g = -1e-3 took 12,873
+  // of them (4.9 s) with never more than 20,000 to go; the Lobatto creep takes it
+  // in a few hundred.
   bool creep_out_of_reach(const typename regularised_law<W>::powers& p, const W& v, const W& steps_to_go) {
     using std::abs;
     constexpr std::size_t creep_min_steps = 256;
-    const W creep_step_limit = 20000;
+    const W creep_step_limit = m_law.g <= 0 ? 2000 : 20000;
     if (++m_creep_steps <= creep_min_steps || !(v < 0) || !(m_law.gamma > 0)) return false;
     const W damping_time = 1 / (m_law.gamma_beta * p.ub1());
     const W slow_time = p.u() / abs(v);
@@ -644,6 +648,14 @@ class adaptive_impact_solver {
   // until the motion is no longer stiff: the damping time 1/(gamma beta u^(beta-1))
   // exceeds the slow time u/|v|. NOTE: v, not w = v + gamma u^beta: on the creep |v| is
   // far below gamma u^beta, and v = w - gamma u^beta would lose the digits of that ratio.
+  // For a work type wider than long double the steps are taken in sigma = ln u instead
+  // (d/dsigma = u d/du, u' = u): the solution has powers of u, whose Taylor radius in u
+  // is u itself (steps of u/20 at 50 digits), but is entire in sigma (steps of 0.3, a
+  // factor 1.35 in u): KK, gamma = 1e10, g = 0, 50 digits: 1445 -> ~250 steps, 8.5 ->
+  // 1.9 s. NOTE: not in long double (double results): there the sigma steps stall at
+  // a step-doubling difference of ~100 ulps in v that does not fall with the step
+  // (measured: KK, gamma 1e3..1e8, g = 0; 60,000+ steps); not understood, so the
+  // proven u form is kept there (double needs it for at most 0.5 s).
   // Returns the tau-mode state there, or nothing if the steps fail (then undecided).
   std::optional<tau_point<W>> creep_implicitly(const tau_point<W>& from) {
     using std::abs;
@@ -685,7 +697,7 @@ class adaptive_impact_solver {
       for (k /= 4; k > 0; --k) out *= u;
       return r.quarters < 0 ? W(1 / out) : out;
     };
-    auto f = [&](const vec& y, vec& d) {
+    auto f_u = [&](const vec& y, vec& d) {
       if (!(y[0] > 0) || !(y[2] < 0)) return false;
       const W ub1 = raise(y[0], b - 1, p_b1);
       d[0] = 1;
@@ -694,7 +706,7 @@ class adaptive_impact_solver {
       d[3] = y[2] * ub1;
       return true;
     };
-    auto jacobian = [&](const vec& y, std::array<vec, 4>& J) {
+    auto jacobian_u = [&](const vec& y, std::array<vec, 4>& J) {
       const W u = y[0], v = y[2];
       const W ub2 = raise(u, b - 2, p_b2), ua1 = raise(u, a - 1, p_a1);
       const W zero = 0;
@@ -703,10 +715,27 @@ class adaptive_impact_solver {
       J[2] = vec{W(-a * ua1 / v - m_law.gamma_beta * (b - 1) * ub2), zero, W(-(m_law.g - ua1 * u) / (v * v)), zero};
       J[3] = vec{W(v * (b - 1) * ub2), zero, W(ub2 * u), zero};
     };
+    const bool in_log = binary_digits<W>() > std::numeric_limits<long double>::digits;
+    auto f = [&](const vec& y, vec& d) {
+      if (!f_u(y, d)) return false;
+      if (in_log)
+        for (W& x : d) x *= y[0];
+      return true;
+    };
+    auto jacobian = [&](const vec& y, std::array<vec, 4>& J) {
+      jacobian_u(y, J);
+      if (!in_log) return;
+      vec d;
+      f_u(y, d);  // d(u f)/dy = u df/dy + f e_u^T
+      for (std::size_t i = 0; i < 4; ++i) {
+        for (W& x : J[i]) x *= y[0];
+        J[i][0] += d[i];
+      }
+    };
     typename regularised_law<W>::powers q;
     m_law.eval(from.z[0], q);
     vec y{q.u(), from.tau, m_law.velocity(from.z[1], q), from.z[2]};
-    W h = -y[0] / 64, taken = 0;
+    W h = in_log ? W(-1) / 64 : W(-y[0] / 64), taken = 0;
     for (;;) {
       if (!(y[2] < 0)) return std::nullopt;  // cannot happen for g <= 0: the steps went wrong
       const W damping = m_law.gamma_beta * pow(y[0], b - 1);
@@ -715,9 +744,11 @@ class adaptive_impact_solver {
         const W s = m_law.Q == 1 ? y[0] : W(pow(y[0], 1 / W(m_law.Q)));
         return tau_point<W>{y[1], {s, W(y[2] + m_law.gamma * pow(y[0], b)), y[3]}};
       }
-      if (-h > y[0] / 2) h = -y[0] / 2;  // the stages stay in u >= u/2 > 0
+      // the stages stay in u >= u/2 > 0; in sigma, u falls by at most e per step
+      const W longest = in_log ? W(1) : W(y[0] / 2);
+      if (-h > longest) h = -longest;
       const vec scales{y[0], abs(y[1]), abs(y[2]), abs(y[3]) > 0 ? abs(y[3]) : W(1)};
-      step_guard(h, y[0]);
+      step_guard(h, in_log ? W(1) : y[0]);
       if (!lobatto.step(f, jacobian, y, h, scales, taken)) continue;
       m_error += m_rtol * abs(y[2]);
     }

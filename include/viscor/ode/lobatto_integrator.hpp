@@ -94,6 +94,7 @@ struct lobatto_iiic_tableau {
 
   explicit lobatto_iiic_tableau(int stages) : s(stages), a(static_cast<std::size_t>(stages * stages)) {
     if (s < 2) throw std::logic_error("lobatto_iiic_tableau: at least 2 stages");
+    using std::abs;
     std::vector<Real> p;
     const int n = s - 1;
     // interior nodes on [-1, 1]: zeros of P'_n, i.e. of P_{n-1}(x) - x P_n(x)
@@ -141,6 +142,11 @@ struct lobatto_iiic_tableau {
         a[i * c.size() + j] = c[i] / 2 * integral - b[0] * basis(j, Real(0));
       }
     }
+    for (std::size_t i = 0; i < c.size(); ++i) {
+      Real row = 0;
+      for (std::size_t j = 0; j < c.size(); ++j) row += abs(a[i * c.size() + j]);
+      if (row > widest_row) widest_row = row;
+    }
     // Lagrange weights on all nodes c_1..c_s at the stage times of the two half
     // steps, in units of the whole step: at c_i/2 (left) and at (1 + c_i)/2 (right).
     left.resize(a.size());
@@ -161,6 +167,8 @@ struct lobatto_iiic_tableau {
 
   /// Weights that carry a step's stages to first guesses for its two half steps.
   std::vector<Real> left, right;
+  /// max_i sum_j |a_ij|.
+  Real widest_row = 0;
 };
 
 }  // namespace detail
@@ -316,12 +324,23 @@ class lobatto_integrator {
           for (std::size_t j = 0; j < s; ++j) sum += m_tab.a[i * s + j] * m_F[j][p];
           m_b[i * N + p] = y0[p] + h * sum - m_Y[i][p];
         }
+      // The size of the terms summed into G_p, |h| max_j |F_jp| max_i sum_j |a_ij|:
+      // G's rounding floor is eps times that. NOTE: without it a component that moves
+      // far from a small start (tau in the creep: 0.06 to 2e4 in one step) keeps a
+      // relative change above 64 eps at the first stage (c_1 = 0, whose terms cancel),
+      // and Newton is declared failed at its rounding floor.
+      for (std::size_t p = 0; p < N; ++p) {
+        Real big = 0;
+        for (std::size_t j = 0; j < s; ++j)
+          if (abs(m_F[j][p]) > big) big = abs(m_F[j][p]);
+        m_term[p] = abs(h) * big * m_tab.widest_row;
+      }
       solve();
       Real change = 0;
       for (std::size_t i = 0; i < s; ++i)
         for (std::size_t p = 0; p < N; ++p) {
           m_Y[i][p] += m_b[i * N + p];
-          const Real d = abs(m_b[i * N + p]) / (abs(m_Y[i][p]) + abs(y0[p]) + eps);
+          const Real d = abs(m_b[i * N + p]) / (abs(m_Y[i][p]) + abs(y0[p]) + m_term[p] + eps);
           if (!(d <= change)) change = d;
         }
       if (!boost::math::isfinite(change)) return -1;
@@ -456,6 +475,7 @@ class lobatto_integrator {
   std::vector<matrix> m_jacobians;
   std::vector<std::size_t> m_ld_rows;
   std::array<coarse, N> m_ld_size{};
+  state m_term{};  // per component: the size of the terms summed into G (see newton)
   std::size_t m_ld_count = 0, m_full_count = 0;
 };
 
