@@ -215,7 +215,9 @@ TEST(radau_integrator, double_lu_reaches_the_real_lu_collocation_solution) {
 
 TEST(lobatto_integrator, double_decomposition_reaches_the_real_stage_values) {
   lobatto_integrator<mpfr_50, 2> low(19, mpfr_50("1e-49")), real(19, mpfr_50("1e-49"));
-  real.use_double_decomposition(false);
+  real.set_low_precision_lu(false);
+  ASSERT_TRUE(low.low_precision_lu());
+  ASSERT_FALSE(real.low_precision_lu());
   auto step = [](auto& r, auto& f, auto& jac, const auto& y0, const mpfr_50& h, auto& y1) {
     return r.single_step(f, jac, y0, h, y1);
   };
@@ -226,8 +228,8 @@ TEST(lobatto_integrator, double_decomposition_reaches_the_real_stage_values) {
   auto jacobian = [&](const std::array<mpfr_50, 2>& y, std::array<std::array<mpfr_50, 2>, 2>& J) { sys(y, J); };
   std::array<mpfr_50, 2> y1;
   ASSERT_TRUE(probe.single_step(f, jacobian, {mpfr_50("0.3"), mpfr_50(sin(mpfr_50("0.3")))}, mpfr_50("0.5"), y1));
-  EXPECT_EQ(probe.double_solves(), 1u);
-  EXPECT_EQ(probe.full_precision_solves(), 0u);
+  EXPECT_EQ(probe.low_precision_solves(), 1u);
+  EXPECT_EQ(probe.real_precision_solves(), 0u);
 }
 
 // The whole adaptive path (half steps started from the whole step's polynomial, the

@@ -32,14 +32,24 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <random>
 #include <sstream>
+#include <string>
+
+#include <unistd.h>
 
 namespace {
 
 using namespace viscor::surrogate;
+
+// ctest runs each case in its own process, two at a time: a file name shared by the
+// cases of one parametrized test must carry the process (they raced on one file).
+std::string temp_path_of_this_process(const std::string& name) {
+  return ::testing::TempDir() + "viscor_surrogate_" + std::to_string(::getpid()) + "_" + name;
+}
 
 TEST(Chebyshev, InterpolationIsExactOnPolynomials1D) {
   const int n = 12;
@@ -142,12 +152,13 @@ TEST_P(CommittedSurrogate, FileReadsBackIdentically) {
   if (!s) GTEST_SKIP() << "no committed surrogate for " << GetParam();
   std::stringstream text;
   write_cor_surrogate(text, *s);
-  const std::string path = ::testing::TempDir() + "/roundtrip.surrogate";
+  const std::string path = temp_path_of_this_process(std::string(GetParam()) + ".roundtrip.surrogate");
   {
     std::ofstream out(path);
     out << text.str();
   }
   const cor_surrogate t = read_cor_surrogate(path);
+  std::remove(path.c_str());
   for (double gamma : {0.0, 1e-9, 0.01, 0.3, 1.0})
     for (double g : {-0.5, -0.1, 0.0, 0.02, 1.0, 57.0, 1e4}) {
       const auto a = (*s)(gamma, g), b = t(gamma, g);
@@ -176,12 +187,13 @@ TEST_P(CommittedSurrogate, ThresholdPowerIsAppliedAndReadBack) {
   std::stringstream text;
   write_cor_surrogate(text, t);
   EXPECT_EQ(text.str().rfind("viscor-cor-surrogate 2\n", 0), 0u);
-  const std::string path = ::testing::TempDir() + "/power.surrogate";
+  const std::string path = temp_path_of_this_process(std::string(GetParam()) + ".power.surrogate");
   {
     std::ofstream out(path);
     out << text.str();
   }
   const cor_surrogate u = read_cor_surrogate(path);
+  std::remove(path.c_str());
   EXPECT_EQ(u.threshold_power, p);
   for (double g : {s->g_split * 1.5, 0.3, 1.0, 57.0, 2000.0, 1e4}) {
     if (!(g > s->g_split)) continue;

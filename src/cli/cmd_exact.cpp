@@ -5,6 +5,7 @@
 
 #include <viscor/exact/exact_solutions.hpp>
 
+#include <chrono>
 #include <sstream>
 
 namespace viscor::cli::cmd_exact {  // named: the subcommands share translation units (unity build)
@@ -21,7 +22,9 @@ struct exact_command {
     with_working_precision(digits, [&]<class Real>() {
       const Real gamma_value = parse_real<Real>(gamma, "gamma");
       const Real g_value = parse_real<Real>(g, "g");
+      const auto start = std::chrono::steady_clock::now();
       const std::optional<exact_result<Real>> r = exact_cor(model, gamma_value, g_value);
+      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
       json j;
       j["command"] = "exact";
@@ -44,13 +47,15 @@ struct exact_command {
       if (r->contact_time) j["contact_time"] = number(*r->contact_time);
       if (r->max_compression) j["max_compression"] = number(*r->max_compression);
       if (r->time_of_max_compression) j["time_of_max_compression"] = number(*r->time_of_max_compression);
+      j["seconds"] = seconds;
       text << "formula  " << r->formula << "\n"
            << "outcome  " << to_string(r->outcome) << " (contact ends at zero overlap u = 0)\n"
            << "e        " << number(r->e) << "\n"
            << "1 - e    " << number(r->one_minus_e) << "\n";
       if (r->contact_time) text << "T_f      " << number(*r->contact_time) << "\n";
       if (r->max_compression) text << "u_max    " << number(*r->max_compression) << "\n";
-      text << "digits   " << decimal_digits<Real>() << " (working precision)\n";
+      text << "digits   " << decimal_digits<Real>() << " (working precision)\n"
+           << "seconds  " << seconds << " s\n";
       output.emit(text.str(), j);
     });
   }

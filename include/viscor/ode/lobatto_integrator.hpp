@@ -187,13 +187,16 @@ class lobatto_integrator {
   /// s stages (order 2s - 2); tolerance on the scaled error per step.
   lobatto_integrator(int stages, const Real& tolerance) : m_tab(stages), m_tol(tolerance) {}
 
-  /// Decompose the Newton matrix in double first when Real is wider than long double
-  /// (default on); off: always in Real.
-  void use_double_decomposition(bool on) { m_try_ld = on; }
+  /// Whether the Newton matrix is decomposed in double first (default: where Real is
+  /// wider than long double). False: always in Real (the reference path). The names
+  /// are radau_integrator's; the code is this integrator's own.
+  void set_low_precision_lu(bool on) { m_try_ld = on; }
+  /// Whether stage solves start with the double decomposition (the switch and Real's width).
+  bool low_precision_lu() const { return m_try_ld && binary_digits<Real>() > std::numeric_limits<long double>::digits; }
   /// Stage solves done with the double decomposition.
-  std::size_t double_solves() const { return m_ld_count; }
+  std::size_t low_precision_solves() const { return m_ld_count; }
   /// Stage solves done with the decomposition in Real.
-  std::size_t full_precision_solves() const { return m_full_count; }
+  std::size_t real_precision_solves() const { return m_full_count; }
 
   /// A step of h from y, error relative to `scales`. True: y advanced by `taken` = h
   /// and h is the next trial step. False: rejected, y unchanged, h reduced.
@@ -264,8 +267,7 @@ class lobatto_integrator {
     matrix J;
     jacobian(y0, J);
     m_jacobians.assign(1, J);
-    if (m_try_ld && binary_digits<Real>() > std::numeric_limits<long double>::digits &&
-        decompose_ld(m_jacobians, h, y0, n)) {
+    if (low_precision_lu() && decompose_ld(m_jacobians, h, y0, n)) {
       // A slow contraction (the Jacobian varies over the step): the matrix is made
       // again from the Jacobian at each stage value, the true Newton matrix.
       auto renew = [&]() -> bool {
@@ -290,7 +292,7 @@ class lobatto_integrator {
         for (std::size_t j = 0; j < s; ++j)
           for (std::size_t q = 0; q < N; ++q) m_m[(i * N + p) * n + (j * N + q)] -= h * m_tab.a[i * s + j] * J[p][q];
       }
-    if (!decompose(n)) return false;
+    if (!factor_rows(m_m, m_rows, n)) return false;
     if (newton(f, y0, h, start, [&] { back_solve(n); }, [] { return true; }, 0) != 1) return false;
     ++m_full_count;
     y1 = m_Y[s - 1];
@@ -355,45 +357,56 @@ class lobatto_integrator {
     return -1;
   }
 
-  // In-place LU of m_m with row pivoting (m_rows: the row order).
-  bool decompose(std::size_t n) {
+  // In-place LU of the n x n matrix a with row pivoting, the row order in `rows` (no
+  // rows are moved); false if a pivot is 0 or not finite. One code for the Real
+  // matrix and for its coarse rounding (decompose_ld).
+  template <class T>
+  static bool factor_rows(std::vector<T>& a, std::vector<std::size_t>& rows, std::size_t n) {
     using std::abs;
-    m_rows.resize(n);
-    for (std::size_t i = 0; i < n; ++i) m_rows[i] = i;
+    rows.resize(n);
+    for (std::size_t i = 0; i < n; ++i) rows[i] = i;
     for (std::size_t k = 0; k < n; ++k) {
       std::size_t best = k;
       for (std::size_t i = k + 1; i < n; ++i)
-        if (abs(m_m[m_rows[i] * n + k]) > abs(m_m[m_rows[best] * n + k])) best = i;
-      std::swap(m_rows[k], m_rows[best]);
-      const Real pivot = m_m[m_rows[k] * n + k];
-      if (pivot == 0) return false;
+        if (abs(a[rows[i] * n + k]) > abs(a[rows[best] * n + k])) best = i;
+      std::swap(rows[k], rows[best]);
+      const T* pivot_row = &a[rows[k] * n];
+      const T pivot = pivot_row[k];
+      if (pivot == 0 || !boost::math::isfinite(pivot)) return false;
       for (std::size_t i = k + 1; i < n; ++i) {
-        Real& l = m_m[m_rows[i] * n + k];
-        l /= pivot;
+        T* row = &a[rows[i] * n];
+        const T l = row[k] /= pivot;
         if (l == 0) continue;
-        for (std::size_t j = k + 1; j < n; ++j) m_m[m_rows[i] * n + j] -= l * m_m[m_rows[k] * n + j];
+        for (std::size_t j = k + 1; j < n; ++j) row[j] -= l * pivot_row[j];
       }
     }
     return true;
   }
 
-  // m_b := M^{-1} m_b (rows addressed through m_rows: no rows are moved).
-  void back_solve(std::size_t n) {
-    m_x.resize(n);
+  // b := M^{-1} b with the factors of factor_rows (x: scratch).
+  template <class T>
+  static void substitute_rows(const std::vector<T>& a, const std::vector<std::size_t>& rows, std::vector<T>& b,
+                              std::vector<T>& x, std::size_t n) {
+    x.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
-      Real sum = m_b[m_rows[i]];
-      for (std::size_t j = 0; j < i; ++j) sum -= m_m[m_rows[i] * n + j] * m_x[j];
-      m_x[i] = sum;
+      const T* row = &a[rows[i] * n];
+      T sum = b[rows[i]];
+      for (std::size_t j = 0; j < i; ++j) sum -= row[j] * x[j];
+      x[i] = sum;
     }
     for (std::size_t i = n; i-- > 0;) {
-      Real sum = m_x[i];
-      for (std::size_t j = i + 1; j < n; ++j) sum -= m_m[m_rows[i] * n + j] * m_x[j];
-      m_x[i] = sum / m_m[m_rows[i] * n + i];
+      const T* row = &a[rows[i] * n];
+      T sum = x[i];
+      for (std::size_t j = i + 1; j < n; ++j) sum -= row[j] * x[j];
+      x[i] = sum / row[i];
     }
-    m_b = m_x;
+    b.swap(x);
   }
 
-  // The Newton matrix I - h (A x J) in coarse, decomposed like decompose() (row
+  // m_b := M^{-1} m_b through the factors in Real.
+  void back_solve(std::size_t n) { substitute_rows(m_m, m_rows, m_b, m_x, n); }
+
+  // The Newton matrix I - h (A x J) in coarse, decomposed by factor_rows (row
   // order in m_ld_rows). False when an entry or pivot is not finite or a pivot is 0.
   // Js[0] for every column block, or Js[j] for block j (then the exact Newton matrix).
   bool decompose_ld(const std::vector<matrix>& Js, const Real& h, const state& y0, std::size_t n) {
@@ -425,44 +438,16 @@ class lobatto_integrator {
             if (!std::isfinite(row[j * N + q])) return false;
           }
       }
-    m_ld_rows.resize(n);
-    for (std::size_t i = 0; i < n; ++i) m_ld_rows[i] = i;
-    for (std::size_t k = 0; k < n; ++k) {
-      std::size_t best = k;
-      for (std::size_t i = k + 1; i < n; ++i)
-        if (std::fabs(m_ld[m_ld_rows[i] * n + k]) > std::fabs(m_ld[m_ld_rows[best] * n + k])) best = i;
-      std::swap(m_ld_rows[k], m_ld_rows[best]);
-      const coarse* pivot_row = &m_ld[m_ld_rows[k] * n];
-      const coarse pivot = pivot_row[k];
-      if (pivot == 0 || !std::isfinite(pivot)) return false;
-      for (std::size_t i = k + 1; i < n; ++i) {
-        coarse* row = &m_ld[m_ld_rows[i] * n];
-        const coarse l = row[k] /= pivot;
-        if (l == 0) continue;
-        for (std::size_t j = k + 1; j < n; ++j) row[j] -= l * pivot_row[j];
-      }
-    }
-    return true;
+    return factor_rows(m_ld, m_ld_rows, n);
   }
 
   // m_b := M^{-1} m_b through the coarse factors: -G rounded to coarse,
   // the update carried back to Real.
   void back_solve_ld(std::size_t n) {
-    m_ld_x.resize(n);
-    for (std::size_t i = 0; i < n; ++i) {
-      const coarse* row = &m_ld[m_ld_rows[i] * n];
-      const std::size_t r = m_ld_rows[i];
-      coarse sum = static_cast<coarse>(m_b[r]) / m_ld_size[r % N];
-      for (std::size_t j = 0; j < i; ++j) sum -= row[j] * m_ld_x[j];
-      m_ld_x[i] = sum;
-    }
-    for (std::size_t i = n; i-- > 0;) {
-      const coarse* row = &m_ld[m_ld_rows[i] * n];
-      coarse sum = m_ld_x[i];
-      for (std::size_t j = i + 1; j < n; ++j) sum -= row[j] * m_ld_x[j];
-      m_ld_x[i] = sum / row[i];
-    }
-    for (std::size_t i = 0; i < n; ++i) m_b[i] = Real(m_ld_x[i] * m_ld_size[i % N]);
+    m_ld_b.resize(n);
+    for (std::size_t r = 0; r < n; ++r) m_ld_b[r] = static_cast<coarse>(m_b[r]) / m_ld_size[r % N];
+    substitute_rows(m_ld, m_ld_rows, m_ld_b, m_ld_x, n);
+    for (std::size_t i = 0; i < n; ++i) m_b[i] = Real(m_ld_b[i] * m_ld_size[i % N]);
   }
 
   detail::lobatto_iiic_tableau<Real> m_tab;
@@ -471,7 +456,7 @@ class lobatto_integrator {
   std::vector<std::size_t> m_rows;
   std::vector<state> m_Y, m_F, m_left_guess, m_right_guess;
   bool m_try_ld = true;
-  std::vector<coarse> m_ld, m_ld_a, m_ld_x, m_ld_j;
+  std::vector<coarse> m_ld, m_ld_a, m_ld_b, m_ld_x, m_ld_j;
   std::vector<matrix> m_jacobians;
   std::vector<std::size_t> m_ld_rows;
   std::array<coarse, N> m_ld_size{};
