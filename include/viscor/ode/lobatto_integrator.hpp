@@ -342,7 +342,9 @@ class lobatto_integrator {
       for (std::size_t i = 0; i < s; ++i)
         for (std::size_t p = 0; p < N; ++p) {
           m_Y[i][p] += m_b[i * N + p];
-          const Real d = abs(m_b[i * N + p]) / (abs(m_Y[i][p]) + abs(y0[p]) + m_term[p] + eps);
+          // no absolute floor: components far below eps (see radau_integrator.hpp)
+          const Real scale = abs(m_Y[i][p]) + abs(y0[p]) + m_term[p];
+          const Real d = scale > 0 ? Real(abs(m_b[i * N + p]) / scale) : Real(abs(m_b[i * N + p]));
           if (!(d <= change)) change = d;
         }
       if (!boost::math::isfinite(change)) return -1;

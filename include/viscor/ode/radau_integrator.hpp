@@ -357,7 +357,12 @@ class radau_integrator {
       for (std::size_t i = 0; i < s; ++i)
         for (std::size_t p = 0; p < N; ++p) {
           m_Z[i * N + p] += m_r[i * N + p];
-          const Real d = abs(m_r[i * N + p]) / (abs(y0[p]) + abs(m_Z[i * N + p]) + eps);
+          // NOTE: relative to the component's own size, with no absolute floor: the
+          // creep's u and v fall far below eps (Kuwabara-Kono, gamma = 1e10, g = 0:
+          // u ~ 1e-34, v ~ 1e-44), and "+ eps" took unconverged stages for converged
+          // (the step-doubling estimate then held the steps at 5e5: 399,547 steps).
+          const Real scale = abs(y0[p]) + abs(m_Z[i * N + p]);
+          const Real d = scale > 0 ? Real(abs(m_r[i * N + p]) / scale) : Real(abs(m_r[i * N + p]));
           if (!(d <= size)) size = d;
         }
       if (!boost::math::isfinite(size)) return newton_end::no_contraction;
