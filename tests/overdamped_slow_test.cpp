@@ -56,22 +56,18 @@ TEST(overdamped_slow, box_hunt_crossley_50_digits) { EXPECT_LE(sweep_box<mpfr_50
 int certify_box(const char* law) {
   int uncertified = 0;
   for (const char* gamma : box_gammas)
-    for (const char* g : box_loads) {
-      // NOTE: left out: certify takes 70-80 s here (its 20-digit Taylor reference
-      // needs 4e5 steps where double needs 5e4) and certifies nothing, the adaptive
-      // method being undecided at e ~ 7e-51 in double; measured in docs/performance.md.
-      if (std::string(law) == "kuwabara_kono" && std::string(gamma) == "1e10" && std::string(g) == "0") continue;
+    for (const char* g : box_loads)
       uncertified += !viscor::test::check_honesty<double>({law_by_name(law), gamma, g}).outcome_certified;
-    }
   return uncertified;
 }
 
 // Uncertified when this test was written: the Hunt-Crossley turn back at gamma = 1e3
-// and 1e4, g = 1e-3 (the adaptive method undecided in double).
+// and 1e4, g = 1e-3 and Kuwabara-Kono at gamma = 1e10, g = 0 (e ~ 7e-51, below what
+// the adaptive method resolves in double), the adaptive method undecided at each.
 TEST(overdamped_slow, certified_box_linear) { EXPECT_EQ(certify_box("linear"), 0); }
 TEST(overdamped_slow, certified_box_hertz_linear_damping) { EXPECT_EQ(certify_box("hertz_linear_damping"), 0); }
 TEST(overdamped_slow, certified_box_tsuji) { EXPECT_EQ(certify_box("tsuji"), 0); }
-TEST(overdamped_slow, certified_box_kuwabara_kono) { EXPECT_EQ(certify_box("kuwabara_kono"), 0); }
+TEST(overdamped_slow, certified_box_kuwabara_kono) { EXPECT_LE(certify_box("kuwabara_kono"), 1); }
 TEST(overdamped_slow, certified_box_hunt_crossley) { EXPECT_LE(certify_box("hunt_crossley"), 2); }
 
 }  // namespace

@@ -1,7 +1,9 @@
 // Lobatto IIIC (Chipman 1971; Hairer and Wanner, "Solving ODEs II", sec. IV.5): the
 // GBS solver's stiff integrator, for the creeping phase of strongly damped impacts
 // (issue 18 item 8). Written apart from the Taylor solver's Radau IIA
-// (radau_integrator.hpp) on purpose: the two solvers share no integrator code.
+// (radau_integrator.hpp) on purpose: the two solvers share no integrator code (only
+// the dense LU of the Newton matrix, detail/dense_lu.hpp, which sets how fast Newton
+// converges but not what to).
 // s stages, order 2s - 2, L-stable and stiffly accurate.
 //
 // Tableau, computed in Real: nodes c_1 = 0, c_s = 1 and the zeros of P'_{s-1}(2c - 1);
@@ -28,6 +30,7 @@
 #pragma once
 
 #include <viscor/core/real_types.hpp>
+#include <viscor/ode/detail/dense_lu.hpp>
 
 #include <boost/math/constants/constants.hpp>
 #include <boost/math/special_functions/fpclassify.hpp>
@@ -292,7 +295,7 @@ class lobatto_integrator {
         for (std::size_t j = 0; j < s; ++j)
           for (std::size_t q = 0; q < N; ++q) m_m[(i * N + p) * n + (j * N + q)] -= h * m_tab.a[i * s + j] * J[p][q];
       }
-    if (!factor_rows(m_m, m_rows, n)) return false;
+    if (!detail::lu_factor(m_m, m_pivot, n)) return false;
     if (newton(f, y0, h, start, [&] { back_solve(n); }, [] { return true; }, 0) != 1) return false;
     ++m_full_count;
     y1 = m_Y[s - 1];
@@ -359,57 +362,11 @@ class lobatto_integrator {
     return -1;
   }
 
-  // In-place LU of the n x n matrix a with row pivoting, the row order in `rows` (no
-  // rows are moved); false if a pivot is 0 or not finite. One code for the Real
-  // matrix and for its coarse rounding (decompose_ld).
-  template <class T>
-  static bool factor_rows(std::vector<T>& a, std::vector<std::size_t>& rows, std::size_t n) {
-    using std::abs;
-    rows.resize(n);
-    for (std::size_t i = 0; i < n; ++i) rows[i] = i;
-    for (std::size_t k = 0; k < n; ++k) {
-      std::size_t best = k;
-      for (std::size_t i = k + 1; i < n; ++i)
-        if (abs(a[rows[i] * n + k]) > abs(a[rows[best] * n + k])) best = i;
-      std::swap(rows[k], rows[best]);
-      const T* pivot_row = &a[rows[k] * n];
-      const T pivot = pivot_row[k];
-      if (pivot == 0 || !boost::math::isfinite(pivot)) return false;
-      for (std::size_t i = k + 1; i < n; ++i) {
-        T* row = &a[rows[i] * n];
-        const T l = row[k] /= pivot;
-        if (l == 0) continue;
-        for (std::size_t j = k + 1; j < n; ++j) row[j] -= l * pivot_row[j];
-      }
-    }
-    return true;
-  }
-
-  // b := M^{-1} b with the factors of factor_rows (x: scratch).
-  template <class T>
-  static void substitute_rows(const std::vector<T>& a, const std::vector<std::size_t>& rows, std::vector<T>& b,
-                              std::vector<T>& x, std::size_t n) {
-    x.resize(n);
-    for (std::size_t i = 0; i < n; ++i) {
-      const T* row = &a[rows[i] * n];
-      T sum = b[rows[i]];
-      for (std::size_t j = 0; j < i; ++j) sum -= row[j] * x[j];
-      x[i] = sum;
-    }
-    for (std::size_t i = n; i-- > 0;) {
-      const T* row = &a[rows[i] * n];
-      T sum = x[i];
-      for (std::size_t j = i + 1; j < n; ++j) sum -= row[j] * x[j];
-      x[i] = sum / row[i];
-    }
-    b.swap(x);
-  }
-
   // m_b := M^{-1} m_b through the factors in Real.
-  void back_solve(std::size_t n) { substitute_rows(m_m, m_rows, m_b, m_x, n); }
+  void back_solve(std::size_t n) { detail::lu_solve(m_m, m_pivot, m_b, n); }
 
-  // The Newton matrix I - h (A x J) in coarse, decomposed by factor_rows (row
-  // order in m_ld_rows). False when an entry or pivot is not finite or a pivot is 0.
+  // The Newton matrix I - h (A x J) in coarse, factored by detail::lu_factor
+  // (interchanges in m_ld_pivot). False when an entry or pivot is not finite or a pivot is 0.
   // Js[0] for every column block, or Js[j] for block j (then the exact Newton matrix).
   bool decompose_ld(const std::vector<matrix>& Js, const Real& h, const state& y0, std::size_t n) {
     using std::abs;
@@ -440,7 +397,7 @@ class lobatto_integrator {
             if (!std::isfinite(row[j * N + q])) return false;
           }
       }
-    return factor_rows(m_ld, m_ld_rows, n);
+    return detail::lu_factor(m_ld, m_ld_pivot, n);
   }
 
   // m_b := M^{-1} m_b through the coarse factors: -G rounded to coarse,
@@ -448,19 +405,19 @@ class lobatto_integrator {
   void back_solve_ld(std::size_t n) {
     m_ld_b.resize(n);
     for (std::size_t r = 0; r < n; ++r) m_ld_b[r] = static_cast<coarse>(m_b[r]) / m_ld_size[r % N];
-    substitute_rows(m_ld, m_ld_rows, m_ld_b, m_ld_x, n);
+    detail::lu_solve(m_ld, m_ld_pivot, m_ld_b, n);
     for (std::size_t i = 0; i < n; ++i) m_b[i] = Real(m_ld_b[i] * m_ld_size[i % N]);
   }
 
   detail::lobatto_iiic_tableau<Real> m_tab;
   Real m_tol;
-  std::vector<Real> m_m, m_b, m_x;
-  std::vector<std::size_t> m_rows;
+  std::vector<Real> m_m, m_b;
+  std::vector<std::size_t> m_pivot;
   std::vector<state> m_Y, m_F, m_left_guess, m_right_guess;
   bool m_try_ld = true;
-  std::vector<coarse> m_ld, m_ld_a, m_ld_b, m_ld_x, m_ld_j;
+  std::vector<coarse> m_ld, m_ld_a, m_ld_b, m_ld_j;
   std::vector<matrix> m_jacobians;
-  std::vector<std::size_t> m_ld_rows;
+  std::vector<std::size_t> m_ld_pivot;
   std::array<coarse, N> m_ld_size{};
   state m_term{};  // per component: the size of the terms summed into G (see newton)
   std::size_t m_ld_count = 0, m_full_count = 0;

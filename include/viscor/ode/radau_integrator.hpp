@@ -33,6 +33,7 @@
 #pragma once
 
 #include <viscor/core/real_types.hpp>
+#include <viscor/ode/detail/dense_lu.hpp>
 
 #include <boost/math/constants/constants.hpp>
 #include <boost/math/special_functions/fpclassify.hpp>
@@ -386,49 +387,8 @@ class radau_integrator {
     return newton_end::no_contraction;
   }
 
-  // LU with partial pivoting of the n x n row-major matrix a in place, the row
-  // permutation in pivot; false if a pivot is 0 or not finite. One code for the
-  // Real matrix and for its double rounding (factor_low).
-  template <class T>
-  static bool lu_factor(std::vector<T>& a, std::vector<std::size_t>& pivot, std::size_t n) {
-    using std::abs;
-    pivot.resize(n);
-    for (std::size_t k = 0; k < n; ++k) {
-      std::size_t p = k;
-      for (std::size_t i = k + 1; i < n; ++i)
-        if (abs(a[i * n + k]) > abs(a[p * n + k])) p = i;
-      pivot[k] = p;
-      if (!(a[p * n + k] != 0) || !boost::math::isfinite(a[p * n + k])) return false;
-      if (p != k)
-        for (std::size_t j = 0; j < n; ++j) std::swap(a[k * n + j], a[p * n + j]);
-      for (std::size_t i = k + 1; i < n; ++i) {
-        a[i * n + k] /= a[k * n + k];
-        const T& l = a[i * n + k];
-        if (l == 0) continue;
-        for (std::size_t j = k + 1; j < n; ++j) a[i * n + j] -= l * a[k * n + j];
-      }
-    }
-    return true;
-  }
-
-  // r := M^{-1} r with the factors of lu_factor. NOTE: lu_factor swaps whole rows
-  // (the multipliers too), so all the row interchanges come first, then the unit
-  // lower triangle (as LAPACK's getrs).
-  template <class T>
-  static void lu_solve(const std::vector<T>& a, const std::vector<std::size_t>& pivot, std::vector<T>& r,
-                       std::size_t n) {
-    for (std::size_t k = 0; k < n; ++k)
-      if (pivot[k] != k) std::swap(r[k], r[pivot[k]]);
-    for (std::size_t k = 0; k < n; ++k)
-      for (std::size_t i = k + 1; i < n; ++i) r[i] -= a[i * n + k] * r[k];
-    for (std::size_t k = n; k-- > 0;) {
-      for (std::size_t j = k + 1; j < n; ++j) r[k] -= a[k * n + j] * r[j];
-      r[k] /= a[k * n + k];
-    }
-  }
-
-  bool factor(std::size_t n) { return lu_factor(m_lu, m_pivot, n); }
-  void substitute(std::size_t n) { lu_solve(m_lu, m_pivot, m_r, n); }
+  bool factor(std::size_t n) { return detail::lu_factor(m_lu, m_pivot, n); }
+  void substitute(std::size_t n) { detail::lu_solve(m_lu, m_pivot, m_r, n); }
 
   // M = I - h (A x J) rounded to double and factored as factor() does; false if an
   // entry does not fit double's range or a pivot vanishes (then the Real LU).
@@ -471,7 +431,7 @@ class radau_integrator {
             if (!std::isfinite(m)) return false;
           }
       }
-    return lu_factor(m_low, m_low_pivot, n);
+    return detail::lu_factor(m_low, m_low_pivot, n);
   }
 
   // m_r := M^{-1} m_r with the double factors of factor_low(): the residual is
@@ -479,7 +439,7 @@ class radau_integrator {
   void substitute_low(std::size_t n) {
     m_low_r.resize(n);
     for (std::size_t k = 0; k < n; ++k) m_low_r[k] = static_cast<low_real>(m_r[k]) / m_low_w[k % N];
-    lu_solve(m_low, m_low_pivot, m_low_r, n);
+    detail::lu_solve(m_low, m_low_pivot, m_low_r, n);
     for (std::size_t k = 0; k < n; ++k) m_r[k] = Real(m_low_r[k] * m_low_w[k % N]);
   }
 
