@@ -46,7 +46,7 @@ def cor(law=None, gamma=None, g=0, digits=50, certify=False, *, alpha=None, beta
     law: a name (NAMED_LAWS), or alpha= and beta= (str such as '3/2', Fraction, int,
     Decimal). gamma, g: str, int, Decimal, Fraction or float (a float is its exact
     binary value). certify=True adds ``certified`` (the digits three computations
-    agree on), as ``viscor cor --certify``. Returns a Result with the fields of
+    agree on, four where the adaptive one is repeated at the reference precision), as ``viscor cor --certify``. Returns a Result with the fields of
     ``viscor cor --json``: e, one_minus_e, outcome, contact_time, max_compression,
     time_of_max_compression, energy_residual, error_estimate, steps, method,
     seconds, gamma, g, law, precision (and stop_overlap for a stick).

@@ -61,13 +61,14 @@ json method_provenance(const table_spec& table) {
     const certify_options defaults;
     j["certify"] = {
         {"computations", "taylor at the working precision; taylor at the reference precision; adaptive (GBS) at "
-                         "the working precision (the linear law: its closed form at the working and the reference "
-                         "precision)"},
+                         "the working precision, and again at the reference precision where it is undecided at the "
+                         "working one (the linear law: its closed form at the working and the reference precision)"},
         {"reference_digits",
          with_working_precision(spec.digits, []<class Real>() { return viscor::detail::reference_digits<Real>(); })},
         {"safety_margin", defaults.safety_margin},
         {"step_tolerance", "the epsilon of each computation's precision (solve_options default)"},
-        {"digits", "the least agreement of both working-precision runs with the reference over e, 1 - e, T_f and "
+        {"digits", "the least agreement of the taylor run at the working precision and of the adaptive run (at "
+                   "the reference precision where that one is used) with the reference over e, 1 - e, T_f and "
                    "u_max, minus the safety margin"}};
   }
   if (table.proven)

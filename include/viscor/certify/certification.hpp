@@ -3,7 +3,9 @@
 //   1. the Taylor method (taylor_impact.hpp) at the working precision of Real;
 //   2. the Taylor method again at a higher precision (by default working + max(5,
 //      working/20) digits) with the tolerance of that precision: the reference;
-//   3. the adaptive GBS method (adaptive_impact.hpp) at the working precision.
+//   3. the adaptive GBS method (adaptive_impact.hpp) at the working precision, or,
+//      where it is undecided there (an e or a creep below what the working precision
+//      resolves), at the reference precision.
 // The reported values are the reference rounded to Real. Their certified
 // significant digits are the smallest number of digits on which 1 and 3 agree with
 // the reference, over e, 1 - e, T_f and u_max, minus a safety margin, and never more
@@ -14,6 +16,11 @@
 //
 // The outcome (rebound or stick) must be the same in all three: disagreement is
 // reported as uncertified (outcome_certified = false, 0 digits), never averaged.
+// An adaptive run undecided at the working precision is repeated at the reference
+// precision, where it is the independent check instead (it is still the other
+// method; its agreement is capped at the working digits like the others). Undecided
+// there too, the outcome stays uncertified: an undecided e = 0 may be a creep the
+// method failed to follow, so it never certifies an absolute e either.
 // NOTE: the reference needs only to be right to more digits than Real carries, since
 // agreement is capped at the working digits and the safety margin comes off that;
 // working + max(5, working/20) digits were measured to suffice (docs/performance.md,
@@ -61,7 +68,14 @@
 namespace viscor {
 
 /// Which computation a certificate entry is.
-enum class certified_source { taylor, taylor_reference, adaptive, closed_form, closed_form_reference };
+enum class certified_source {
+  taylor,
+  taylor_reference,
+  adaptive,
+  adaptive_reference,
+  closed_form,
+  closed_form_reference
+};
 
 /// The source's name as written in tables and JSON.
 inline std::string_view to_string(certified_source s) {
@@ -69,6 +83,7 @@ inline std::string_view to_string(certified_source s) {
     case certified_source::taylor: return "taylor";
     case certified_source::taylor_reference: return "taylor (reference precision)";
     case certified_source::adaptive: return "adaptive";
+    case certified_source::adaptive_reference: return "adaptive (reference precision)";
     case certified_source::closed_form: return "closed form";
     case certified_source::closed_form_reference: return "closed form (reference precision)";
   }
@@ -116,7 +131,9 @@ struct certified_result {
   bool near_sticking = false;      ///< e < 1e-3 or an uncertified outcome: read absolute_digits_e
   int working_digits = 0;          ///< decimal_digits<Real>()
   int safety_margin = 0;
-  std::vector<certified_computation<Real>> computations;  ///< taylor, reference, adaptive
+  /// taylor, reference, adaptive, and adaptive at the reference precision where the
+  /// adaptive run was undecided at the working precision
+  std::vector<certified_computation<Real>> computations;
 };
 
 namespace detail {
@@ -155,6 +172,27 @@ struct certify_reference<boost::multiprecision::number<boost::multiprecision::mp
 };
 #endif
 
+/// A computation's entry: its result (in its own type R) rounded to Real, its texts at
+/// its own precision. caller_digits: the caller's precision for narrow() (run-time mpfr).
+template <class Real, class R>
+certified_computation<Real> record_narrowed(certified_source source, int digits, const impact_result<R>& r,
+                                            double seconds, unsigned caller_digits) {
+  certified_computation<Real> c;
+  c.source = source;
+  c.precision_digits = digits;
+  c.outcome = r.outcome;
+  c.e = narrow<Real>(r.e, caller_digits), c.one_minus_e = narrow<Real>(r.one_minus_e, caller_digits);
+  c.contact_time = narrow<Real>(r.contact_time, caller_digits);
+  c.max_compression = narrow<Real>(r.max_compression, caller_digits);
+  c.e_text = to_decimal_string(r.e), c.one_minus_e_text = to_decimal_string(r.one_minus_e);
+  c.contact_time_text = to_decimal_string(r.contact_time);
+  c.error_estimate = narrow<Real>(r.error_estimate, caller_digits);
+  c.steps = r.steps;
+  c.seconds = seconds;
+  return c;
+}
+
+/// A working-precision computation's entry.
 template <class Real>
 certified_computation<Real> record(certified_source source, int digits, const impact_result<Real>& r, double seconds) {
   certified_computation<Real> c;
@@ -182,7 +220,33 @@ auto timed(F f, double& seconds) {
 
 namespace detail {
 
-// The reference solve and every comparison, in the reference type Ref.
+// Digits on which a computation (x, in Ref) agrees with the reference, each capped at
+// `working`, into c; a stick agreed on has e = 0 and 1 - e = 1 exactly.
+template <class Ref, class Real>
+void compare_with_reference(const impact_result<Ref>& x, const impact_result<Ref>& ref, int working,
+                            certified_computation<Real>& c) {
+  const Ref one = 1;
+  c.digits_e = agreement_digits(x.e, ref.e, ref.e, working);
+  c.absolute_digits_e = agreement_digits(x.e, ref.e, one, working);
+  c.digits_one_minus_e = agreement_digits(x.one_minus_e, ref.one_minus_e, ref.one_minus_e, working);
+  c.digits_contact_time = agreement_digits(x.contact_time, ref.contact_time, ref.contact_time, working);
+  c.digits_max_compression = agreement_digits(x.max_compression, ref.max_compression, ref.max_compression, working);
+  if (ref.outcome == impact_outcome::stick && x.outcome == impact_outcome::stick)
+    c.digits_e = c.digits_one_minus_e = c.absolute_digits_e = working;
+}
+
+/// A working-precision result exactly in Ref.
+template <class Ref, class Real>
+impact_result<Ref> widened(const impact_result<Real>& r) {
+  impact_result<Ref> w;
+  w.outcome = r.outcome;
+  w.e = widen<Ref>(r.e), w.one_minus_e = widen<Ref>(r.one_minus_e);
+  w.contact_time = widen<Ref>(r.contact_time), w.max_compression = widen<Ref>(r.max_compression);
+  return w;
+}
+
+// The reference solve and every comparison, in the reference type Ref; the adaptive
+// run again at the reference precision where it was undecided at the working one.
 template <class Ref, class Real>
 void certify_against_reference(const contact_law& law, const Real& gamma, const Real& g, const certify_options& options,
                                const certify_perturbation& perturbation, int reference, unsigned caller_digits,
@@ -190,60 +254,49 @@ void certify_against_reference(const contact_law& law, const Real& gamma, const 
                                certified_result<Real>& out) {
   const int working = out.working_digits;
   // NOTE: the inputs are exact binary numbers of Real; widen converts them exactly.
-  Ref ref_gamma = widen<Ref>(gamma);
-  if (perturbation.which == certified_source::taylor_reference)
-    ref_gamma *= 1 + parse_real<Ref>(perturbation.relative, "perturbation");
+  auto ref_gamma = [&](certified_source s) {
+    Ref x = widen<Ref>(gamma);
+    if (perturbation.which == s) x *= 1 + parse_real<Ref>(perturbation.relative, "perturbation");
+    return x;
+  };
   const Ref ref_g = widen<Ref>(g);
   double seconds = 0;
-  const impact_result<Ref> ref =
-      timed([&] { return solve_impact_taylor<Ref>(law, ref_gamma, ref_g, solve_options<Ref>{}); }, seconds);
-  certified_computation<Real> entry;
-  entry.source = certified_source::taylor_reference;
-  entry.precision_digits = reference;
-  entry.outcome = ref.outcome;
-  entry.e = narrow<Real>(ref.e, caller_digits);
-  entry.one_minus_e = narrow<Real>(ref.one_minus_e, caller_digits);
-  entry.contact_time = narrow<Real>(ref.contact_time, caller_digits);
-  entry.max_compression = narrow<Real>(ref.max_compression, caller_digits);
-  entry.e_text = to_decimal_string(ref.e), entry.one_minus_e_text = to_decimal_string(ref.one_minus_e);
-  entry.contact_time_text = to_decimal_string(ref.contact_time);
-  entry.error_estimate = narrow<Real>(ref.error_estimate, caller_digits);
-  entry.steps = ref.steps;
-  entry.seconds = seconds;
+  const impact_result<Ref> ref = timed(
+      [&] { return solve_impact_taylor<Ref>(law, ref_gamma(certified_source::taylor_reference), ref_g, {}); },
+      seconds);
+  certified_computation<Real> entry =
+      record_narrowed<Real>(certified_source::taylor_reference, reference, ref, seconds, caller_digits);
   entry.digits_e = entry.digits_one_minus_e = entry.digits_contact_time = reference;
   entry.digits_max_compression = entry.absolute_digits_e = reference;
   out.computations.insert(out.computations.begin() + 1, entry);
-
   out.outcome = ref.outcome;
   out.e = entry.e, out.one_minus_e = entry.one_minus_e;
   out.contact_time = entry.contact_time, out.max_compression = entry.max_compression;
-  // An undecided outcome (any of the three) is never certified, even if all agree on it.
-  out.outcome_certified = taylor.outcome == ref.outcome && adaptive.outcome == ref.outcome &&
+
+  // The independent check: the adaptive method, at the reference precision if undecided.
+  impact_result<Ref> independent = widened<Ref>(adaptive);
+  if (adaptive.outcome == impact_outcome::undecided) {
+    independent = timed(
+        [&] { return solve_impact_adaptive<Ref>(law, ref_gamma(certified_source::adaptive_reference), ref_g, {}); },
+        seconds);
+    out.computations.push_back(
+        record_narrowed<Real>(certified_source::adaptive_reference, reference, independent, seconds, caller_digits));
+  }
+  // An undecided outcome (any of them) is never certified, even if all agree on it.
+  out.outcome_certified = taylor.outcome == ref.outcome && independent.outcome == ref.outcome &&
                           ref.outcome != impact_outcome::undecided;
 
-  // Agreement of each working-precision computation with the reference, capped at `working`.
-  out.digits_e = out.digits_one_minus_e = out.digits_contact_time = out.digits_max_compression = working;
-  out.absolute_digits_e = working;
-  const Ref one = 1;
-  for (auto* c : {&out.computations[0], &out.computations[2]}) {
-    const impact_result<Real>& r = c->source == certified_source::taylor ? taylor : adaptive;
-    c->digits_e = agreement_digits(widen<Ref>(r.e), ref.e, ref.e, working);
-    c->absolute_digits_e = agreement_digits(widen<Ref>(r.e), ref.e, one, working);
-    c->digits_one_minus_e = agreement_digits(widen<Ref>(r.one_minus_e), ref.one_minus_e, ref.one_minus_e, working);
-    c->digits_contact_time =
-        agreement_digits(widen<Ref>(r.contact_time), ref.contact_time, ref.contact_time, working);
-    c->digits_max_compression =
-        agreement_digits(widen<Ref>(r.max_compression), ref.max_compression, ref.max_compression, working);
-    if (ref.outcome == impact_outcome::stick && r.outcome == impact_outcome::stick) {
-      // e = 0 and 1 - e = 1 exactly once the outcome is certified: nothing to compare.
-      c->digits_e = c->digits_one_minus_e = c->absolute_digits_e = working;
-    }
-    out.digits_e = std::min(out.digits_e, c->digits_e);
-    out.digits_one_minus_e = std::min(out.digits_one_minus_e, c->digits_one_minus_e);
-    out.digits_contact_time = std::min(out.digits_contact_time, c->digits_contact_time);
-    out.digits_max_compression = std::min(out.digits_max_compression, c->digits_max_compression);
-    out.absolute_digits_e = std::min(out.absolute_digits_e, c->absolute_digits_e);
-  }
+  compare_with_reference(widened<Ref>(taylor), ref, working, out.computations[0]);
+  compare_with_reference(widened<Ref>(adaptive), ref, working, out.computations[2]);
+  if (out.computations.size() > 3) compare_with_reference(independent, ref, working, out.computations[3]);
+  // Certified: the least agreement of the Taylor run and of the independent check.
+  const certified_computation<Real>& t = out.computations[0];
+  const certified_computation<Real>& i = out.computations.back();
+  out.digits_e = std::min(t.digits_e, i.digits_e);
+  out.digits_one_minus_e = std::min(t.digits_one_minus_e, i.digits_one_minus_e);
+  out.digits_contact_time = std::min(t.digits_contact_time, i.digits_contact_time);
+  out.digits_max_compression = std::min(t.digits_max_compression, i.digits_max_compression);
+  out.absolute_digits_e = std::min(t.absolute_digits_e, i.absolute_digits_e);
   const int agreement =
       std::min({out.digits_e, out.digits_one_minus_e, out.digits_contact_time, out.digits_max_compression});
   out.digits = std::max(0, agreement - options.safety_margin);
