@@ -4,7 +4,8 @@
 // by the trapping sector below u* while still compressing (before, the steps, bounded
 // by the fast damping scale, exhausted the budget: linear law, gamma = 1e4, g = 1e6).
 // Where it is not a creep (a real turn back: Hunt-Crossley at gamma = 1e2, g = 1e-3)
-// the stick must still be found and agreed on. Truth: the linear law's closed form;
+// the stick must still be found and agreed on; where it is pressed past u* and
+// creeps back down to it, the trapping sector above u* proves the stick. Truth: the linear law's closed form;
 // for the other laws the two methods, which make their proofs independently, must agree. No timing is asserted here (speed lives in
 // tools/overdamped_sweep.py and docs/performance.md); a step count bounds the work.
 // The full grid of gamma in [2, 1e10], g in (0, 1e12] is overdamped_slow_test.cpp.
@@ -33,6 +34,19 @@ TEST(overdamped, creep_up_to_the_equilibrium_is_a_proven_stick_50_digits) {
   for (const char* law : viscor::test::overdamped_laws)
     for (const char* gamma : {"1e4", "1e10"})
       for (const char* g : {"1", "1e9"}) viscor::test::check_creep_up<mpfr_50>(law, gamma, g);
+}
+
+TEST(overdamped, pressed_past_the_equilibrium_creeps_back_a_proven_stick) {
+  // Maximal compression above u* (the bead arrives faster than it creeps), then a creep
+  // back down to u* on the slow manifold, inside the trapping sector from the start.
+  // The adaptive method was `undecided` at each of these (its GBS steps could not
+  // follow the creep, and E > 0 still bounded e only by ~1e-2); the trapping sector
+  // after maximal compression proves the stick. The Taylor solver proves it on its own.
+  using viscor::test::check_overdamped_point;
+  for (const char* gamma : {"1e3", "1e4"})
+    EXPECT_EQ(check_overdamped_point<double>("hunt_crossley", gamma, "1e-3", 1e-8), impact_outcome::stick);
+  EXPECT_EQ(check_overdamped_point<mpfr_50>("hunt_crossley", "1e4", "1e-3", mpfr_50("1e-40")), impact_outcome::stick);
+  EXPECT_EQ(check_overdamped_point<mpfr_50>("tsuji", "1e2", "1e-3", mpfr_50("1e-40")), impact_outcome::stick);
 }
 
 TEST(overdamped, creeping_out_is_a_rebound_both_methods_agree_double) {

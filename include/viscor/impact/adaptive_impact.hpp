@@ -452,6 +452,15 @@ class adaptive_impact_solver {
         out.outcome = tau_outcome::creeps, out.contact_time = inf;
         break;
       }
+      // NOTE: the trapping sector is a proof at any time, not only once the energy is
+      // spent: a strongly damped bead pressed past u* creeps back down to it on the
+      // slow manifold, inside the sector from the start, while E > 0 still bounds e
+      // by ~1e-2 (Hunt-Crossley, gamma = 1e4, g = 1e-3: was `undecided` by
+      // creep_out_of_reach at every precision).
+      if (m_law.g > 0 && creeps_to_equilibrium(at.z[0], v) == rest_verdict::trapped) {
+        out.outcome = tau_outcome::creeps, out.contact_time = inf;
+        break;
+      }
       if (creep_out_of_reach(p, v, p.u() / abs(v) / h)) {
         // g <= 0: no turn back is possible (u'' = g - u^alpha < 0 at v = 0): implicit steps
         const std::optional<tau_point<W>> crept = m_law.g <= 0 ? creep_implicitly(at) : std::nullopt;
