@@ -66,4 +66,13 @@ TEST(overdamped, creeping_out_at_zero_load_50_digits) {
   viscor::test::check_creep_out<mpfr_50>("kuwabara_kono", "1e10", "0", mpfr_50("1e-45"));
 }
 
+TEST(overdamped, creeping_out_under_a_pull_50_digits) {
+  // g < 0: both methods hand the creep to implicit steps in ln u at 50 digits (Radau in
+  // the Taylor solver, Lobatto in the GBS solver). Truth: the linear law's closed form;
+  // for Tsuji each method is the other's truth (they share no integrator code but the
+  // LU), to 1e-43 of e ~ 6.6e-10 (they differ by ~2e-45 relative).
+  viscor::test::check_creep_out<mpfr_50>("linear", "1e10", "-1", mpfr_50("1e-45"));
+  viscor::test::check_creep_out<mpfr_50>("tsuji", "1e10", "-1e-3", mpfr_50("1e-43"));
+}
+
 }  // namespace

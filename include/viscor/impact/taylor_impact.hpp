@@ -56,10 +56,11 @@
 // 2c. implicit_creep, issue 18 item 8: past maximal compression a strongly damped
 //    bead can creep along the slow manifold for far longer than the damping time that
 //    bounds the Taylor steps (stiff_creep). For g <= 0 (no turn back is possible) the
-//    creep is followed by the L-stable Radau IIA method (ode/radau_integrator.hpp)
-//    until the exit test of phase 2 holds. For g > 0, or if those steps fail, the solve
-//    ends at once as undecided, with error_estimate a bound on e from the energy,
-//    which never increases: e <= sqrt(2E).
+//    creep is followed by the L-stable Radau IIA method (ode/radau_integrator.hpp;
+//    in ln u for g < 0 and work types wider than long double) until the exit test of
+//    phase 2 holds. For g > 0, or if those steps fail, the solve ends at once as
+//    undecided, with error_estimate a bound on e from the energy, which never
+//    increases: e <= sqrt(2E).
 //
 // The GBS solver (adaptive_impact.hpp) makes its own exit, barrier and energy
 // arguments on purpose: the two solvers share no phase code (a shared proof
@@ -471,20 +472,42 @@ class taylor_impact_solver {
 
   // ---- phase 2c: the stiff creep out, g <= 0 (issue 18 item 8) ----
   // Takes the state where stiff_creep held (past maximal compression, v < 0) and
-  // u_max; integrates (u, v, D) in tau by Radau IIA (ode/radau_integrator.hpp, order
-  // 2s - 1 with s = max(3, (digits + 2)/3) stages) until the exit test of phase 2
-  // holds, and returns that state; nothing if the steps fail (a step shorter than the
-  // rounding of tau): the solve is then undecided.
+  // u_max; integrates the creep by Radau IIA (ode/radau_integrator.hpp, order 2s - 1
+  // with s = max(3, (digits + 2)/3) stages) until the exit test of phase 2 holds, and
+  // returns that state; nothing if the steps fail (a step shorter than the rounding of
+  // its variable): the solve is then undecided.
+  // The variable: tau, on (u, v, D); or, for g < 0 in work types wider than long
+  // double, rho = -ln u, on (u, v, D, tau) with y' = (tau' = u/|v|) times the rates in
+  // tau. Pulled out, the bead reaches u = 0 on the slow manifold in finite time
+  // (u^beta ~ the time left, for beta > 1): in tau the Taylor radius is that time
+  // left and the steps a few per cent of it, while the creep is smooth in ln u.
+  // NOTE, 50 digits, gamma = 1e10, g = -1e-3: Tsuji 2427 steps in tau (4.9 s), 613 in
+  // rho (1.5 s), the same e to 52 digits; every law but the linear one 1.5-4x faster at
+  // g < 0 (linear: 0.17 -> 0.29 s, u is linear in tau there). At g = 0 rho was slower
+  // (Kuwabara-Kono 1e8: 1.3 -> 1.9 s), and carrying tau as a fourth component in tau
+  // cost more steps (793 -> 879 at Kuwabara-Kono 1e10, g = 0), hence two forms.
+  // Double and long double keep tau, where the whole solve takes at most ~0.2 s (not
+  // tried in rho: the GBS solver's creep in ln u stalls in long double, see
+  // adaptive_impact.hpp).
   std::optional<state> implicit_creep(const state& from, const Real& u_max) {
+    if (m_c.g < 0 && binary_digits<Real>() > std::numeric_limits<long double>::digits)
+      return creep_steps<4>(from, u_max);
+    return creep_steps<3>(from, u_max);
+  }
+
+  // N = 3: (u, v, D) in tau; N = 4: (u, v, D, tau) in rho = -ln u (implicit_creep).
+  template <std::size_t N>
+  std::optional<state> creep_steps(const state& from, const Real& u_max) {
     using std::abs;
     using std::pow;
     const auto& c = m_c;
-    using vec = std::array<Real, 3>;
+    using vec = std::array<Real, N>;
+    constexpr bool in_log = N == 4;
     const int stages = std::max(3, (decimal_digits<Real>() + 2) / 3);
     // NOTE: the step-doubling difference carries rounding of a few ulps: a tolerance
     // below 16 ulps would shrink the steps to nothing.
     const Real floor = 16 * epsilon<Real>();
-    radau_integrator<Real, 3> radau(stages, m_tol > floor ? m_tol : floor);
+    radau_integrator<Real, N> radau(stages, m_tol > floor ? m_tol : floor);
     Real damping, u_a, u_b2;  // scratch: gamma beta u^(beta-1), u^(alpha-1), u^(beta-2)
     // NOTE: exponents that are multiples of 1/4 (every named law) from square roots
     // and products, a few roundings instead of pow's exp and log: 36% of a 50-digit
@@ -517,39 +540,67 @@ class taylor_impact_solver {
       }
       damping = c.gamma_beta * u_b2 * u;
     };
-    auto f = [&](const vec& y, vec& d) {
-      if (!(y[0] > 0)) return false;
+    auto rate = [&](const vec& y, vec& d) {
+      if (!(y[0] > 0) || (in_log && !(y[1] < 0))) return false;
       powers(y[0]);
       d[0] = y[1];
       d[1] = c.g - u_a * y[0] - damping * y[1];
       d[2] = 2 * damping * y[1] * y[1];
+      if constexpr (in_log) d[3] = 1;
       return true;
     };
-
-    auto jacobian = [&](const vec& y, std::array<vec, 3>& J) {
+    auto f = [&](const vec& y, vec& d) {
+      if (!rate(y, d)) return false;
+      if constexpr (in_log) {
+        const Real dtau = -y[0] / y[1];
+        for (Real& x : d) x *= dtau;
+      }
+      return true;
+    };
+    auto jacobian = [&](const vec& y, std::array<vec, N>& J) {
       powers(y[0]);
       const Real damping_slope = c.gamma_beta * (c.beta - 1) * u_b2;  // d/du of gamma beta u^(beta-1)
-      J[0] = vec{Real(0), Real(1), Real(0)};
-      J[1] = vec{Real(-c.alpha * u_a - damping_slope * y[1]), Real(-damping), Real(0)};
-      J[2] = vec{Real(2 * damping_slope * y[1] * y[1]), Real(4 * damping * y[1]), Real(0)};
+      for (vec& row : J) row.fill(Real(0));
+      J[0][1] = 1;
+      J[1][0] = -c.alpha * u_a - damping_slope * y[1];
+      J[1][1] = -damping;
+      J[2][0] = 2 * damping_slope * y[1] * y[1];
+      J[2][1] = 4 * damping * y[1];
+      if constexpr (in_log) {
+        // d(r tau')/dy = tau' dr/dy + r (dtau'/dy)^T, tau' = -u/v
+        vec r;
+        rate(y, r);
+        const Real dtau = -y[0] / y[1], by_u = -1 / y[1], by_v = y[0] / (y[1] * y[1]);
+        for (std::size_t i = 0; i < N; ++i) {
+          for (Real& x : J[i]) x *= dtau;
+          J[i][0] += r[i] * by_u;
+          J[i][1] += r[i] * by_v;
+        }
+      }
     };
-    vec y{from.u, from.v, from.D};
-    Real tau = from.tau, h = from.u / abs(from.v) / 64, taken = 0;
+    vec y;
+    y[0] = from.u, y[1] = from.v, y[2] = from.D;
+    Real tau = from.tau, h = in_log ? Real(1) / 64 : Real(from.u / abs(from.v) / 64), taken = 0;
+    if constexpr (in_log) y[3] = tau;
     // Landing: past the exit test, where the endpoint series would overflow, the creep
     // is followed on to u = 0 (endpoint_series_overflow).
     bool landing = false;
     for (;;) {
-      const vec scales{abs(y[0]), abs(y[1]), abs(y[2]) > 0 ? abs(y[2]) : Real(1)};
-      // NOTE: at most half the slow time u/|v| per step: u falls at most about
-      // halfway, and the way out does not start at a u too tiny for its steps.
-      const Real cap = y[0] / (2 * abs(y[1]));
+      vec scales;
+      for (std::size_t i = 0; i < N; ++i) scales[i] = abs(y[i]) > 0 ? Real(abs(y[i])) : Real(1);
+      // NOTE: at most half the slow time u/|v| per step (in rho: ln 2): u falls at
+      // most about halfway, and the way out does not start at a u too tiny for its steps.
+      const Real cap = in_log ? Real(boost::math::constants::ln_two<Real>()) : Real(y[0] / (2 * abs(y[1])));
       if (h > cap) h = cap;
       count_step();
       if (!radau.try_step(f, jacobian, y, h, scales, taken)) {
-        if (!(h > 64 * epsilon<Real>() * abs(tau))) return std::nullopt;
+        if (!(h > 64 * epsilon<Real>() * (in_log ? Real(1) : abs(tau)))) return std::nullopt;
         continue;
       }
-      tau += taken;
+      if constexpr (in_log)
+        tau = y[3];
+      else
+        tau += taken;
       note_speed(y[1]);
       const state here{y[0], y[1], tau, y[2]};
       if (!(y[1] < 0)) return std::nullopt;  // cannot happen for g <= 0: the steps went wrong
@@ -562,7 +613,7 @@ class taylor_impact_solver {
         // rest of the way, u/|v| in time, changes v and D by less than tol relative
         // to first order (their rates times u/|v|); then the first-order close.
         vec d;
-        f(y, d);
+        rate(y, d);
         const Real rest = y[0] / abs(y[1]);
         if (abs(d[1]) * rest <= m_tol * abs(y[1]) && abs(d[2]) * rest <= m_tol * abs(y[2]))
           return state{Real(0), Real(y[1] + d[1] * rest), Real(tau + rest), Real(y[2] + d[2] * rest)};
