@@ -1,6 +1,6 @@
 # Finds what the Python module needs (docs/python.md): a Python 3 interpreter with
-# its development headers, and pybind11. Sets VISCOR_PYTHON_FOUND (the default of
-# VISCOR_BUILD_PYTHON) and says why when something is missing.
+# its development headers, and pybind11. Sets VISCOR_PYTHON_FOUND (what
+# VISCOR_BUILD_PYTHON=AUTO builds on) and says why when something is missing.
 #
 # The interpreter: Python3_EXECUTABLE when given; otherwise the first python3 on
 # PATH, unless it lacks NumPy and the system's python3 (same minor version, so the

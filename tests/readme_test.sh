@@ -3,9 +3,10 @@
 # cannot drift (issue 13). `viscor` is the build tree's tool (a PATH entry), and
 # `./build/viscor` too; commands run in a scratch directory that sees the repository's
 # docs/, tools/ and reference_data/. The two set-up commands are checked, not run
-# (they install and build): the test command must be .ci/run's line exactly, the
-# main-job command must install with --cli and build only viscor_cli, and what it runs
-# after the build is run.
+# (they install and build): .ci/run must hold exactly the two, the main-job command
+# first and the test command second (CI walks a newcomer's path), the main-job command
+# must install with --cli and build only viscor_cli, and what it runs after the build
+# is run.
 # The README's ```cpp block must be examples/certified_cor.cpp verbatim.
 # Usage: readme_test.sh SOURCE_DIR BUILD_DIR
 set -uo pipefail
@@ -25,7 +26,14 @@ failures=0
 fail() { echo "README: $*" >&2; failures=$((failures + 1)); }
 
 setup_prefix='bash tools/install-deps.sh && cmake -S . -B build && cmake --build build -j2'
-ci_line=$(grep -E '^bash tools/install-deps.sh' "$src/.ci/run")
+ci_lines=$(grep -E '^bash tools/install-deps.sh' "$src/.ci/run")
+readme_setup=$(grep -E '^bash tools/install-deps.sh' "$src/README.md")
+[ "$ci_lines" = "$readme_setup" ] || fail ".ci/run must run the README's two set-up commands, main job first:
+  README:
+$readme_setup
+  .ci/run:
+$ci_lines"
+ci_line=$(printf '%s\n' "$ci_lines" | tail -n 1)
 commands=0
 # Every line of every ```sh block, with backslash continuations joined.
 while IFS= read -r command; do
