@@ -227,9 +227,9 @@ struct dem_command {
            << " % of 1 - e)\n";
     }
     std::string snippet = dem::deck_snippet(model, impact.kind, s);
-    if (model.code == dem::dem_code::yade)  // the YADE script names the bead's size, density and the load
+    if (model.code == dem::dem_code::yade)  // the YADE script names the bead's size, density, speed and the load
       for (const auto& [name, value] : {std::pair<std::string, std::string>{"DENSITY", density}, {"RADIUS", radius},
-                                        {"GRAVITY", gravity}})
+                                        {"GRAVITY", gravity}, {"V0", v0}})
         for (std::size_t at = snippet.find(name); at != std::string::npos; at = snippet.find(name, at + value.size()))
           snippet.replace(at, name.size(), value);
     const dem::drop_timing<Real> timing = dem::drop_timing_for(model, impact, d);

@@ -82,11 +82,14 @@ inline std::string deck_snippet(const dem_model& model, contact_kind kind, const
       }
       ip2 = "Ip2_FrictMat_FrictMat_MindlinPhys(betan=" + d.damping + ")", law = "Law2_ScGeom_MindlinPhys_Mindlin()";
     }
-    if (wall)
+    if (wall) {
       s += "O.bodies.append([utils.wall(0, axis=2, material=rigid), utils.sphere((0, 0, RADIUS), RADIUS, material=bead)])\n";
-    else
+      s += "O.bodies[1].state.vel = (0, 0, -V0)  # the impact speed\n";
+    } else {
       s += "O.bodies.append([utils.sphere((0, 0, 0), RADIUS, material=bead), "
            "utils.sphere((0, 0, 2 * RADIUS), RADIUS, material=bead)])\n";
+      s += "O.bodies[0].state.vel, O.bodies[1].state.vel = (0, 0, V0 / 2), (0, 0, -V0 / 2)  # approaching at V0\n";
+    }
     s += "O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Sphere_Aabb()" +
          std::string(wall ? ", Bo1_Wall_Aabb()" : "") + "]),\n";
     s += "    InteractionLoop([" + std::string(wall ? "Ig2_Wall_Sphere_ScGeom()" : "Ig2_Sphere_Sphere_ScGeom()") +
