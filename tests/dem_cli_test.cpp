@@ -202,3 +202,68 @@ TEST(CliDem, YadeDeckAtFortyDigitsAgreesWithDouble) {
   EXPECT_NEAR(d40, d15, 1e-12 * d15);  // both calibrate e to 1e-13; the double run carries ~15 digits
 }
 }  // namespace
+
+namespace {
+// The readable output states the contact time and the time step (dt = T/400; the
+// contact of these laws lasts about 3.2 T to 3.6 T: docs/dem.md, "Validation").
+TEST(CliDem, ReadableOutputStatesContactTimeAndTimeStep) {
+  if (!cli_built()) GTEST_SKIP() << "viscor CLI not built";
+  const std::string args = "dem lammps --damping tsuji" + steel + " --target-e 0.8 --v0 0.5 --gravity 9.81";
+  const auto text = run_cli(args);
+  ASSERT_EQ(text.status, 0) << text.err;
+  EXPECT_NE(text.out.find("the contact lasts"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("dt = T/400"), std::string::npos) << text.out;
+  const auto j = nlohmann::json::parse(run_cli(args + " --json").out);
+  const double T = std::stod(j["time_scale_s"].get<std::string>());
+  EXPECT_NEAR(std::stod(j["time_step_s"].get<std::string>()), T / 400, 1e-12 * T);
+  const double contact = std::stod(j["contact_time_s"].get<std::string>());
+  EXPECT_GT(contact, 3.0 * T);
+  EXPECT_LT(contact, 3.8 * T);
+}
+
+// The pasted LIGGGHTS wall snippet declares the friction its tangential model needs
+// and keeps the bead-wall entries apart from the bead-bead one, which for this
+// conversion (exact without load, and a pair feels no gravity) is the target itself.
+TEST(CliDem, LiggghtsSnippetDeclaresFrictionAndSeparatesBeadBead) {
+  if (!cli_built()) GTEST_SKIP() << "viscor CLI not built";
+  const auto r = run_cli("dem liggghts --damping hertz" + steel + " --target-e 0.5 --v0 0.01 --gravity 9.81 --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  const std::string snippet = j["snippet"], wall = j["deck"]["damping"], bead_bead = j["deck"]["bead_bead_damping"];
+  EXPECT_NE(snippet.find("coefficientFriction peratomtypepair 2"), std::string::npos) << snippet;
+  EXPECT_NEAR(std::stod(bead_bead), 0.5, 1e-12);
+  EXPECT_GT(std::abs(std::stod(wall) - 0.5), 1e-4);  // under gravity at 0.01 m/s the wall entry differs
+  EXPECT_NE(snippet.find("coefficientRestitution peratomtypepair 2 " + bead_bead + " " + wall + " " + wall + " " + wall),
+            std::string::npos) << snippet;
+}
+
+// --drop-deck: refuses a file viscor did not write (exit 2, the file untouched),
+// replaces its own, and needs a wall and a calibration.
+TEST(CliDem, DropDeckNeverReplacesAForeignFile) {
+  if (!cli_built()) GTEST_SKIP() << "viscor CLI not built";
+  const std::string deck = ::testing::TempDir() + "viscor_dem_drop_deck_" + std::to_string(::getpid()) + ".in";
+  const std::string args = "dem lammps --damping tsuji" + steel + " --v0 0.5 --gravity 9.81 --drop-deck " + deck;
+  { std::ofstream(deck) << "my own deck\n"; }
+  const auto refused = run_cli(args + " --target-e 0.8");
+  EXPECT_EQ(refused.status, 2);
+  EXPECT_NE(refused.err.find("--drop-deck " + deck), std::string::npos) << refused.err;
+  std::ifstream kept(deck);
+  std::string first;
+  std::getline(kept, first);
+  EXPECT_EQ(first, "my own deck");
+  std::filesystem::remove(deck);
+  ASSERT_EQ(run_cli(args + " --target-e 0.8").status, 0);
+  const auto again = run_cli(args + " --target-e 0.7");
+  EXPECT_EQ(again.status, 0) << again.err;
+  EXPECT_NE(again.out.find("wrote " + deck), std::string::npos) << again.out;
+  const std::string yade_not_python = "dem yade --damping mindlin" + steel + " --v0 0.5 --gravity 9.81 --target-e 0.8 "
+                                      "--drop-deck " + deck;  // yade -x skips files not ending in .py
+  for (const std::string& bad : {args + " --target-e 0.8 --contact pair", args + " --deck-damping 0.8", yade_not_python}) {
+    SCOPED_TRACE(bad);
+    const auto r = run_cli(bad);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("--drop-deck"), std::string::npos) << r.err;
+  }
+  std::filesystem::remove(deck);
+}
+}  // namespace

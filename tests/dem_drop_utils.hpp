@@ -125,6 +125,39 @@ inline std::string format_double(double x) {
   return buffer;
 }
 
+/// Runs `command` (its output on stdout), collecting the thermo lines "step z vz"
+/// (step = 0, 1, 2, ...) as samples and the first 4000 characters of the rest as `log`;
+/// returns the exit status.
+inline int run_collecting_samples(const std::string& command, std::vector<sample>& samples, std::string& log) {
+  FILE* pipe = ::popen(command.c_str(), "r");
+  if (!pipe) return -1;
+  std::array<char, 4096> line{};
+  while (std::fgets(line.data(), line.size(), pipe)) {
+    long step = 0;
+    double z = 0, vz = 0;
+    char tail = 0;
+    if (std::sscanf(line.data(), " %ld %lf %lf %c", &step, &z, &vz, &tail) == 3 && step == long(samples.size()))
+      samples.push_back({z, vz});
+    else if (log.size() < 4000)
+      log += line.data();
+  }
+  return ::pclose(pipe);
+}
+
+/// The speed at the end of contact: the first sample back at `touch` (z >= touch,
+/// moving up) ends contact; the last two in-contact samples are fitted to
+/// v = v_e + A (touch - z)^beta. Empty if contact never ended.
+inline std::optional<double> fitted_exit_speed(const std::vector<sample>& samples, double touch, double beta) {
+  for (std::size_t i = 2; i < samples.size(); ++i) {
+    if (samples[i - 1].z < touch && samples[i].z >= touch && samples[i].vz > 0) {
+      const double xa = std::pow(touch - samples[i - 2].z, beta), xb = std::pow(touch - samples[i - 1].z, beta);
+      const double slope = (samples[i - 2].vz - samples[i - 1].vz) / (xa - xb);
+      return samples[i - 1].vz - slope * xb;
+    }
+  }
+  return std::nullopt;
+}
+
 inline drop_result run_drop(const std::string& program, const drop_setup& s) {
   drop_result r;
   std::string dir_template = ::testing::TempDir() + "viscor_dem_dropXXXXXX";
@@ -147,37 +180,18 @@ inline drop_result run_drop(const std::string& program, const drop_setup& s) {
   cmd += " 2>&1";
   std::vector<sample> samples;
   std::string log;
-  if (FILE* pipe = ::popen(cmd.c_str(), "r")) {
-    std::array<char, 4096> line{};
-    while (std::fgets(line.data(), line.size(), pipe)) {
-      long step = 0;
-      double z = 0, vz = 0;
-      char tail = 0;
-      if (std::sscanf(line.data(), " %ld %lf %lf %c", &step, &z, &vz, &tail) == 3 && step == long(samples.size()))
-        samples.push_back({z, vz});
-      else if (log.size() < 4000)
-        log += line.data();
-    }
-    const int status = ::pclose(pipe);
-    if (status != 0) {
-      r.message = program + " failed (status " + std::to_string(status) + "):\n" + log;
-      std::filesystem::remove_all(dir);
-      return r;
-    }
-  }
+  const int status = run_collecting_samples(cmd, samples, log);
   std::filesystem::remove_all(dir);
-  // First step whose centre is back above z = R moving up (pair: gap back at 2R,
-  // separating): contact ended in it. (z, vz) is (gap, separation speed) for a pair.
+  if (status != 0) {
+    r.message = program + " failed (status " + std::to_string(status) + "):\n" + log;
+    return r;
+  }
+  // (z, vz) is (gap, separation speed) for a pair.
   const double touch = pair ? 2 * s.radius : s.radius;
-  for (std::size_t i = 2; i < samples.size(); ++i) {
-    if (samples[i - 1].z < touch && samples[i].z >= touch && samples[i].vz > 0) {
-      const double beta = law_of(*s.model).beta.value<double>();
-      const double xa = std::pow(touch - samples[i - 2].z, beta), xb = std::pow(touch - samples[i - 1].z, beta);
-      const double slope = (samples[i - 2].vz - samples[i - 1].vz) / (xa - xb);
-      r.e = (samples[i - 1].vz - slope * xb) / s.v0;
-      r.ok = true;
-      return r;
-    }
+  if (const auto v_exit = fitted_exit_speed(samples, touch, law_of(*s.model).beta.value<double>())) {
+    r.e = *v_exit / s.v0;
+    r.ok = true;
+    return r;
   }
   r.message = "no rebound within " + std::to_string(samples.size()) + " samples; output:\n" + log;
   return r;

@@ -8,8 +8,12 @@
 
 #include <viscor/dem/dem_calibration.hpp>
 #include <viscor/dem/deck_snippet.hpp>
+#include <viscor/dem/drop_deck.hpp>
 
 #include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <vector>
 
@@ -31,6 +35,7 @@ struct dem_command {
   std::string youngs_modulus, poisson_ratio, radius, density, stiffness;
   std::string target_e, deck_damping, deck_en, v0, gravity, force = "0";
   std::string speeds = "0.001,0.01,0.1,1,10";
+  std::string drop_deck_path;  ///< --drop-deck FILE: a complete single-bead drop for the code
   int digits = 15;
   bool strict = false;
 
@@ -96,6 +101,15 @@ struct dem_command {
     if (reverse && !target_e.empty())
       throw invalid_parameter("give either --target-e (deck for a measured e) or --deck-damping/--deck-en (e for a "
                               "deck), not both");
+    if (!drop_deck_path.empty() && reverse)
+      throw invalid_parameter("--drop-deck " + drop_deck_path + " writes the drop for a calibrated deck: give "
+                              "--target-e, not --deck-damping/--deck-en");
+    if (!drop_deck_path.empty() && kind != dem::contact_kind::wall)
+      throw invalid_parameter("--drop-deck " + drop_deck_path + " drops one bead on a wall: it needs --contact wall, "
+                              "not --contact " + contact);
+    if (!drop_deck_path.empty() && model.code == dem::dem_code::yade && !ends_with(drop_deck_path, ".py"))
+      throw invalid_parameter("--drop-deck " + drop_deck_path + ": a YADE script must end in .py (yade -x "
+                              "silently skips other files)");
     if (!reverse) {
       require(target_e, "--target-e", "the measured coefficient of restitution, 0 < e < 1");
       require(v0, "--v0", "impact speed, m/s");
@@ -172,6 +186,13 @@ struct dem_command {
       deck["youngs_modulus"] = s.youngs_modulus;
       deck["poisson_ratio"] = s.poisson_ratio;
       if (s.wall_youngs_modulus) deck["wall_youngs_modulus"] = *s.wall_youngs_modulus;
+      if (reads_bead_bead_separately(model, impact.kind)) {
+        const dem::dem_deck<Real> bead_bead = bead_bead_deck(model, impact, target);
+        s.bead_bead_youngs_modulus = to_decimal_string(bead_bead.youngs_modulus);
+        s.bead_bead_damping = to_decimal_string(bead_bead.damping);
+        deck["bead_bead_youngs_modulus"] = *s.bead_bead_youngs_modulus;
+        deck["bead_bead_damping"] = *s.bead_bead_damping;
+      }
     }
     deck["damping"] = s.damping;
     deck["damping_kind"] = model.deck_kind == dem::deck_damping_kind::coefficient ? "coefficient"
@@ -197,6 +218,9 @@ struct dem_command {
       text << "youngs_modulus = " << s.youngs_modulus << ", poisson_ratio = " << s.poisson_ratio
            << ", damping = " << s.damping << "\n";
       if (s.wall_youngs_modulus) text << "            wall type youngs_modulus = " << *s.wall_youngs_modulus << " (rigid)\n";
+      if (s.bead_bead_damping)
+        text << "            bead-bead (two beads, same e and v0, no load): youngs_modulus = "
+             << *s.bead_bead_youngs_modulus << ", damping = " << *s.bead_bead_damping << "\n";
     }
     if (d.builtin_e) {
       const Real miss = *d.builtin_e - target;
@@ -217,13 +241,92 @@ struct dem_command {
            << " % of 1 - e)\n";
     }
     std::string snippet = dem::deck_snippet(model, impact.kind, s);
-    if (model.code == dem::dem_code::yade)  // the YADE script names the bead's size, density and the load
+    if (model.code == dem::dem_code::yade)  // the YADE script names the bead's size, density, speed and the load
       for (const auto& [name, value] : {std::pair<std::string, std::string>{"DENSITY", density}, {"RADIUS", radius},
-                                        {"GRAVITY", gravity}})
+                                        {"GRAVITY", gravity}, {"V0", v0}})
         for (std::size_t at = snippet.find(name); at != std::string::npos; at = snippet.find(name, at + value.size()))
           snippet.replace(at, name.size(), value);
+    const dem::drop_timing<Real> timing = dem::drop_timing_for(model, impact, d);
+    snippet += dem::snippet_time_step_line(model, to_decimal_string(timing.time_step, 6),
+                                           to_decimal_string(timing.contact_time, 6), timing.steps_per_time_scale);
     j["snippet"] = snippet;
+    j["contact_time_s"] = number(timing.contact_time);
+    j["time_step_s"] = number(timing.time_step);
+    text << "time step   the contact lasts " << to_decimal_string(timing.contact_time, 6) << " s; dt = T/"
+         << timing.steps_per_time_scale << " = " << to_decimal_string(timing.time_step, 6) << " s (T = "
+         << to_decimal_string(timing.time_scale, 6) << " s, about "
+         << static_cast<long>(static_cast<double>(timing.contact_time / timing.time_step)) << " steps per contact)\n";
     text << "snippet\n" << snippet;
+    if (!drop_deck_path.empty()) {
+      write_drop_deck(dem::drop_deck(model, s, drop_inputs(impact, timing)));
+      j["drop_deck"] = drop_deck_path;
+      text << "drop deck   wrote " << drop_deck_path << " (run: " << drop_run_command(model) << ")\n";
+    }
+  }
+
+  /// LAMMPS and LIGGGHTS read the bead-bead entries apart from the wall's (pair_coeff, type pair (1,1)).
+  static bool reads_bead_bead_separately(const dem::dem_model& model, dem::contact_kind kind) {
+    return kind == dem::contact_kind::wall && model.code != dem::dem_code::yade;
+  }
+
+  /// The deck of two beads at the same e and approach speed without load (gravity drops out of a pair).
+  template <class Real>
+  static dem::dem_deck<Real> bead_bead_deck(const dem::dem_model& model, const dem::dem_impact<Real>& wall_impact,
+                                            const Real& target) {
+    dem::dem_impact<Real> pair = wall_impact;
+    pair.kind = dem::contact_kind::pair, pair.gravity = 0, pair.force = 0;
+    return dem::dem_deck_for(model, pair, target);
+  }
+
+  template <class Real>
+  dem::drop_deck_inputs drop_inputs(const dem::dem_impact<Real>& impact, const dem::drop_timing<Real>& timing) const {
+    dem::drop_deck_inputs in;
+    in.radius = radius, in.density = density, in.v0 = v0, in.gravity = gravity, in.force = force;
+    in.target_e = target_e;
+    dem::set_drop_geometry_and_steps(impact.bead.radius, timing, in);
+    return in;
+  }
+
+  std::string drop_run_command(const dem::dem_model& model) const {
+    switch (model.code) {
+      case dem::dem_code::lammps: return "lmp -in " + drop_deck_path;
+      case dem::dem_code::liggghts: return "liggghts -in " + drop_deck_path;
+      case dem::dem_code::yade: return "yade -n -x " + drop_deck_path;
+    }
+    return {};
+  }
+
+  /// True when `path` holds a drop deck viscor wrote (its first line is the marker).
+  static bool written_by_viscor(const std::string& path) {
+    std::ifstream in(path);
+    std::string first;
+    std::getline(in, first);
+    return first.rfind(dem::drop_deck_marker, 0) == 0;
+  }
+
+  /// Writes the deck through a temporary file; never replaces a file viscor did not write.
+  void write_drop_deck(const std::string& deck) const {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    if (fs::exists(drop_deck_path, ec) && !written_by_viscor(drop_deck_path))
+      throw invalid_parameter("--drop-deck " + drop_deck_path + ": the file exists and is not a drop deck viscor "
+                              "wrote; refusing to replace it (remove it or choose another name)");
+    const std::string temporary = drop_deck_path + ".tmp." + std::to_string(::getpid());
+    {
+      std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+      if (!out) throw error("--drop-deck " + drop_deck_path + ": cannot write '" + temporary + "'");
+      out << deck;
+      out.flush();
+      if (!out) {
+        std::remove(temporary.c_str());
+        throw error("--drop-deck " + drop_deck_path + ": writing '" + temporary + "' failed");
+      }
+    }
+    fs::rename(temporary, drop_deck_path, ec);
+    if (ec) {
+      std::remove(temporary.c_str());
+      throw error("--drop-deck " + drop_deck_path + ": cannot move the deck into place: " + ec.message());
+    }
   }
 
   template <class Real>
@@ -300,6 +403,9 @@ void setup(CLI::App& app) {
   app.add_option("--force", cmd->force, "constant force pressing the bead on the wall (or the pair together), N")
       ->capture_default_str();
   app.add_option("--speeds", cmd->speeds, "reverse: comma-separated impact speeds, m/s")->capture_default_str();
+  app.add_option("--drop-deck", cmd->drop_deck_path,
+                 "also write a complete single-bead drop on a wall for the code (LAMMPS/LIGGGHTS input, YADE script) "
+                 "that prints the rebound e; never replaces a file viscor did not write");
   app.add_option("--digits", cmd->digits, "working precision in decimal digits")->capture_default_str();
   add_strict_flag(app, cmd->strict);
   app.callback([cmd] { cmd->run(); });

@@ -1,0 +1,188 @@
+// The drop decks of `viscor dem ... --drop-deck FILE` run as written in the real
+// programs (lmp, liggghts, yade) and print a rebound e within 1e-4 of the target;
+// the LIGGGHTS paste snippet runs inside a minimal deck this test writes, and the
+// LAMMPS snippet's bead-bead entries reproduce the target for two beads. The bead
+// is the new user's: a 2 mm glass bead, e = 0.8 measured at 0.5 m/s under gravity.
+// A program missing from PATH is skipped with a message (tools/install-deps.sh
+// installs them).
+#include "dem_drop_utils.hpp"
+#include "test_utils.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <string>
+
+namespace {
+
+using namespace viscor::test;
+
+const std::string glass =
+    " --youngs-modulus 7e10 --poisson-ratio 0.22 --radius 1e-3 --density 2500 --target-e 0.8 --v0 0.5 --gravity 9.81";
+constexpr double target_e = 0.8;
+
+/// The agreement the issue asks of a generated deck (the measured misses at dt = T/400 for a
+/// glass-like bead are about 1e-5: docs/dem.md, "Validation").
+constexpr double deck_tolerance = 1e-4;
+
+/// A fresh temporary folder, removed on destruction.
+struct scratch_dir {
+  std::filesystem::path path;
+  scratch_dir() {
+    std::string name = ::testing::TempDir() + "viscor_drop_deckXXXXXX";
+    if (::mkdtemp(name.data())) path = name;
+  }
+  ~scratch_dir() {
+    std::error_code ec;
+    if (!path.empty()) std::filesystem::remove_all(path, ec);
+  }
+};
+
+/// Runs `command` in `dir`, returning its exit status and output (stdout, then stderr, in `out`).
+cli_run run_in(const std::filesystem::path& dir, const std::string& command) {
+  cli_run r = run_cli("", "cd '" + dir.string() + "' && " + command);
+  r.out += r.err;
+  return r;
+}
+
+/// The e a deck printed ("rebound e = X"), or -1.
+double printed_rebound_e(const std::string& output) {
+  static const std::regex line(R"(rebound e = ([-+0-9.eE]+))");
+  std::smatch m;
+  return std::regex_search(output, m, line) ? std::stod(m[1]) : -1;
+}
+
+/// Writes the drop deck of `model_args` (followed by the bead's material and impact,
+/// `bead`) with the CLI, runs it as written with `program` and checks the e it prints.
+void expect_deck_rebounds_at_target(const std::string& program_name, const std::string& model_args,
+                                    const std::string& run_flags, const std::string& bead = glass) {
+  SCOPED_TRACE(model_args);
+  if (std::string(VISCOR_CLI_PATH).empty()) GTEST_SKIP() << "viscor CLI not built";
+  const auto program = dem_drop::find_program(program_name);
+  if (!program) GTEST_SKIP() << program_name << " is not installed (tools/install-deps.sh installs it)";
+  scratch_dir dir;
+  ASSERT_FALSE(dir.path.empty());
+  const std::string deck_name = program_name == "yade" ? "drop.py" : "drop.in";
+  const std::string deck = (dir.path / deck_name).string();
+  const auto written = run_cli("dem " + model_args + bead + " --drop-deck " + deck);
+  ASSERT_EQ(written.status, 0) << written.err;
+  EXPECT_NE(written.out.find("wrote " + deck), std::string::npos) << written.out;
+  const auto ran = run_in(dir.path, "'" + *program + "' " + run_flags + " " + deck_name);
+  ASSERT_EQ(ran.status, 0) << ran.out;
+  const double e = printed_rebound_e(ran.out);
+  EXPECT_NEAR(e, target_e, deck_tolerance) << ran.out.substr(ran.out.size() > 3000 ? ran.out.size() - 3000 : 0);
+  std::printf("[deck] %s: rebound e = %.9f\n", model_args.c_str(), e);
+}
+
+TEST(DemDropDeck, LammpsTsujiRunsAsWritten) { expect_deck_rebounds_at_target("lmp", "lammps --damping tsuji", "-in"); }
+TEST(DemDropDeck, LammpsVelocityRunsAsWritten) {
+  expect_deck_rebounds_at_target("lmp", "lammps --damping velocity", "-in");
+}
+TEST(DemDropDeck, LiggghtsHertzRunsAsWritten) {
+  expect_deck_rebounds_at_target("liggghts", "liggghts --damping hertz", "-in");
+}
+TEST(DemDropDeck, YadeMindlinRunsAsWritten) { expect_deck_rebounds_at_target("yade", "yade --damping mindlin", "-n -x"); }
+// the linear spring takes the contact stiffness --k (here 1e6 N/m) instead of E and nu
+TEST(DemDropDeck, YadeViscoelasticRunsAsWritten) {
+  expect_deck_rebounds_at_target("yade", "yade --damping viscoelastic", "-n -x",
+                                 " --k 1e6 --radius 1e-3 --density 2500 --target-e 0.8 --v0 0.5 --gravity 9.81");
+}
+
+/// `viscor dem --json` output for the glass bead.
+nlohmann::json dem_json(const std::string& model_args) {
+  const auto r = run_cli("dem " + model_args + glass + " --json");
+  EXPECT_EQ(r.status, 0) << r.err;
+  return nlohmann::json::parse(r.out);
+}
+
+// The snippet as a user pastes it into a deck of their own: the test supplies the
+// box, the bead, gravity, the integrator and the output, nothing of the contact model.
+TEST(DemDropDeck, LiggghtsSnippetRunsInMinimalDeck) {
+  if (std::string(VISCOR_CLI_PATH).empty()) GTEST_SKIP() << "viscor CLI not built";
+  const auto program = dem_drop::find_program("liggghts");
+  if (!program) GTEST_SKIP() << "liggghts is not installed (tools/install-deps.sh installs it)";
+  const auto j = dem_json("liggghts --damping hertz");
+  const double dt = std::stod(j["time_step_s"].get<std::string>());
+  const std::string snippet = j["snippet"];
+  EXPECT_NE(snippet.find("coefficientFriction"), std::string::npos) << snippet;
+  const std::string deck =
+      "atom_style granular\natom_modify map array\nboundary f f f\nnewton off\ncommunicate single vel yes\nunits si\n"
+      "region box block -0.01 0.01 -0.01 0.01 -0.01 0.01 units box\ncreate_box 2 box\nneighbor 5e-4 bin\n"
+      "neigh_modify delay 0\n" + snippet +
+      "timestep " + dem_drop::format_double(dt) + "\ncreate_atoms 1 single 0 0 1e-3 units box\n"
+      "set atom 1 diameter 2e-3 density 2500\nvelocity all set 0 0 -0.5 units box\n"
+      "fix grav all gravity 9.81 vector 0 0 -1\nfix integr all nve/sphere\nvariable z equal z[1]\n"
+      "variable vz equal vz[1]\nthermo_style custom step v_z v_vz\nthermo_modify format float %.17g\nthermo 1\n"
+      "run " + std::to_string(static_cast<long>(6 * std::stod(j["time_scale_s"].get<std::string>()) / dt)) + "\n";
+  scratch_dir dir;
+  ASSERT_FALSE(dir.path.empty());
+  std::ofstream(dir.path / "in.snippet") << deck;
+  std::vector<dem_drop::sample> samples;
+  std::string log;
+  const int status =
+      dem_drop::run_collecting_samples("cd '" + dir.path.string() + "' && '" + *program + "' -in in.snippet 2>&1", samples, log);
+  ASSERT_EQ(status, 0) << log;
+  const auto v_exit = dem_drop::fitted_exit_speed(samples, 1e-3, 1.25);  // LIGGGHTS hertz: beta = 5/4
+  ASSERT_TRUE(v_exit) << log;
+  EXPECT_NEAR(*v_exit / 0.5, target_e, deck_tolerance);
+  std::printf("[snippet] liggghts hertz in a minimal deck: rebound e = %.9f\n", *v_exit / 0.5);
+}
+
+// The LAMMPS wall snippet's bead-bead entries (pair_coeff) are those of two beads:
+// a head-on collision of two glass beads with them rebounds at the target.
+TEST(DemDropDeck, LammpsSnippetBeadBeadEntriesFitTwoBeads) {
+  if (std::string(VISCOR_CLI_PATH).empty()) GTEST_SKIP() << "viscor CLI not built";
+  const auto program = dem_drop::find_program("lmp");
+  if (!program) GTEST_SKIP() << "lmp is not installed (tools/install-deps.sh installs it)";
+  const auto j = dem_json("lammps --damping tsuji");
+  ASSERT_TRUE(j["deck"].contains("bead_bead_damping")) << j.dump(2);
+  const std::string E = j["deck"]["bead_bead_youngs_modulus"], damp = j["deck"]["bead_bead_damping"];
+  EXPECT_DOUBLE_EQ(std::stod(E), 7e10);  // a pair reads E/(2(1 - nu^2)): the bead's own E
+  const std::string snippet = j["snippet"];
+  EXPECT_NE(snippet.find("pair_coeff * * hertz/material " + E + " " + damp), std::string::npos) << snippet;
+  dem_drop::drop_setup s;
+  s.model = &viscor::dem::find_dem_model("lammps", "tsuji");
+  s.kind = viscor::dem::contact_kind::pair;
+  s.youngs_modulus = E, s.poisson_ratio = j["deck"]["poisson_ratio"], s.damping = damp;
+  s.radius = 1e-3, s.density = 2500, s.v0 = 0.5;
+  // the pair's time scale: (m*/k)^(2/5) v0^(-1/5) with m* = m/2, k = (4/3) E/(2(1 - nu^2)) sqrt(R/2)
+  const double m = 4.0 / 3 * M_PI * 1e-9 * 2500;
+  const double k = 4.0 / 3 * 7e10 / (2 * (1 - 0.22 * 0.22)) * std::sqrt(0.5e-3);
+  const double T = std::pow(m / 2 / k, 0.4) * std::pow(0.5, -0.2);
+  s.dt = T / 400, s.steps = 6 * 400;
+  const auto r = dem_drop::run_drop(*program, s);
+  ASSERT_TRUE(r.ok) << r.message;
+  EXPECT_NEAR(r.e, target_e, deck_tolerance);
+  std::printf("[snippet] lammps tsuji bead-bead entries, two beads head-on: e = %.9f\n", r.e);
+}
+
+}  // namespace
+
+namespace {
+// The YADE snippet as pasted, followed only by a run of twice the contact time:
+// it runs, and the bead leaves the wall upwards at about the target e (the speed
+// read after the flight, which gravity has slowed by g t, added back here; the
+// exact e at zero overlap is the drop deck's check above).
+TEST(DemDropDeck, YadeSnippetRunsAsPasted) {
+  if (std::string(VISCOR_CLI_PATH).empty()) GTEST_SKIP() << "viscor CLI not built";
+  const auto program = dem_drop::find_program("yade");
+  if (!program) GTEST_SKIP() << "yade is not installed (tools/install-deps.sh installs it)";
+  const auto j = dem_json("yade --damping mindlin");
+  const double contact = std::stod(j["contact_time_s"].get<std::string>());
+  const std::string script = "import sys\n" + j["snippet"].get<std::string>() +
+                             "O.run(int(2 * " + dem_drop::format_double(contact) + " / O.dt), True)\n"
+                             "v = O.bodies[1].state.vel[2] + 9.81 * (O.time - " + dem_drop::format_double(contact) + ")\n"
+                             "print('rebound e = %.15g' % (v / 0.5))\nsys.stdout.flush()\n";
+  scratch_dir dir;
+  ASSERT_FALSE(dir.path.empty());
+  std::ofstream(dir.path / "snippet.py") << script;
+  const auto ran = run_in(dir.path, "'" + *program + "' -n -x snippet.py");
+  ASSERT_EQ(ran.status, 0) << ran.out;
+  const double e = printed_rebound_e(ran.out);
+  EXPECT_NEAR(e, target_e, 1e-3) << ran.out;
+  std::printf("[snippet] yade mindlin as pasted: e = %.6f\n", e);
+}
+}  // namespace
