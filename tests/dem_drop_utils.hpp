@@ -12,6 +12,8 @@
 
 #include <gtest/gtest.h>
 
+#include "required_dependencies.hpp"
+
 #include <array>
 #include <cmath>
 #include <cstdio>

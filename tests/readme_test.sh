@@ -4,7 +4,8 @@
 # `./build/viscor` too; commands run in a scratch directory that sees the repository's
 # docs/, tools/ and reference_data/. The two set-up commands are checked, not run
 # (they install and build): .ci/run must hold exactly the two, the main-job command
-# first and the test command second (CI walks a newcomer's path), the main-job command
+# first and the test command second (CI walks a newcomer's path), the test command
+# configures with -DVISCOR_REQUIRE_ALL_DEPS=ON (CI cannot pass by skipping), the main-job command
 # must install with --cli and build only viscor_cli, and what it runs after the build
 # is run.
 # The README's ```cpp block must be examples/certified_cor.cpp verbatim.
@@ -40,13 +41,17 @@ while IFS= read -r command; do
   [ -z "$command" ] && continue
   commands=$((commands + 1))
   if [[ $command == "bash tools/install-deps.sh"* ]]; then
-    [[ $command == "${setup_prefix/install-deps.sh/install-deps.sh --cli}"* || $command == "$setup_prefix"* ]] ||
+    [[ $command == "${setup_prefix/install-deps.sh/install-deps.sh --cli}"* || $command == "$setup_prefix"* ||
+       $command == "${setup_prefix/-B build/-B build -DVISCOR_REQUIRE_ALL_DEPS=ON}"* ]] ||
       fail "set-up command not of the form '$setup_prefix ...': $command"
     tail=${command##*&& }
     if [[ $tail == ctest* ]]; then
       [ "$command" = "$ci_line" ] || fail "the test command differs from .ci/run:
   README: $command
   .ci/run: $ci_line"
+      # CI must not pass by skipping: missing dependencies fail (CMakeLists.txt).
+      [[ $command == "${setup_prefix/-B build/-B build -DVISCOR_REQUIRE_ALL_DEPS=ON}"* ]] ||
+        fail "the test command must configure with -DVISCOR_REQUIRE_ALL_DEPS=ON: $command"
     else
       main_prefix='bash tools/install-deps.sh --cli && cmake -S . -B build && cmake --build build -j2 --target viscor_cli &&'
       [[ $command == "$main_prefix"* ]] || fail "the main-job command must install with --cli and build only viscor_cli: $command"
