@@ -7,7 +7,7 @@ approximation by viscor.approx. Before drawing, the reference curve is checked
 against the committed certified tables reference_data/cor_report_grid.csv and
 reference_data/cor_report_g10_kuwabara_kono.csv.
 
-  PYTHONPATH=build/python python3 examples/python/cor_vs_gamma.py [--out DIR] [--points N]
+  build/python/python3 examples/python/cor_vs_gamma.py [--out DIR] [--points N]
 Needs NumPy and matplotlib (Debian: python3-numpy python3-matplotlib).
 """
 import argparse

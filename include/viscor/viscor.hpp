@@ -37,8 +37,27 @@
 #include <viscor/impact/taylor_impact.hpp>
 #include <viscor/ode/taylor_integrator.hpp>
 #include <viscor/approx/u_max.hpp>
+#include <viscor/core/plausible_units.hpp>
+#include <viscor/dem/builtin_conversions.hpp>
+#include <viscor/dem/deck_convention.hpp>
+#include <viscor/dem/deck_snippet.hpp>
+#include <viscor/dem/dem_calibration.hpp>
+#include <viscor/dem/dem_model.hpp>
+#include <viscor/dem/hertz_contact.hpp>
+#include <viscor/surrogate/chebyshev.hpp>
+#include <viscor/surrogate/cor_surrogate.hpp>
+#include <viscor/surrogate/surrogate_fit.hpp>
+#include <viscor/surrogate/surrogate_source.hpp>
+#include <viscor/surrogate/surrogate_timing.hpp>
+#include <viscor/surrogate/surrogate_verify.hpp>
 #include <viscor/config.hpp>
 #include <viscor/certify/extern_templates.hpp>
+
+// The proofs need Arb: they are part of the umbrella where the target viscor::enclose
+// (which defines VISCOR_WITH_ENCLOSE and carries Arb's include path) is linked.
+#if defined(VISCOR_WITH_ENCLOSE)
+#include <viscor/enclose/enclose.hpp>
+#endif
 
 /// @namespace viscor
 /// The coefficient of restitution of a bead hitting a wall under a constant load,
@@ -47,7 +66,7 @@
 /// docs/architecture.md maps the layers (one folder of include/viscor per layer).
 
 /// @namespace viscor::dem
-/// The DEM bridge: damping parameters in the conventions of LAMMPS and LIGGGHTS
+/// The DEM bridge: damping parameters in the conventions of LAMMPS, LIGGGHTS and YADE
 /// (docs/dem.md).
 
 /// @namespace viscor::surrogate

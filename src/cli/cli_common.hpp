@@ -80,6 +80,13 @@ struct output_options {
       return;
     }
     write_atomically(path, body);
+    say_written(path, body);
+  }
+
+  /// One line on stderr naming the file written: -o leaves standard output empty,
+  /// and a user should not have to guess whether (and where) anything was written.
+  static void say_written(const std::string& path, const std::string& body) {
+    std::cerr << "viscor: wrote " << path << " (" << body.size() << " bytes)\n";
   }
 
   static void write_atomically(const std::string& path, const std::string& body) {

@@ -102,9 +102,10 @@ struct cor_command {
         j["physical"] = physical.echo();
         j["time_scale_s"] = number(scales->time_scale);
         j["length_scale_m"] = number(scales->length_scale);
-        text << "physical   m = " << number(p.m) << " kg, k = " << number(p.k) << ", gamma0 = " << number(p.gamma0)
-             << ", v0 = " << number(p.v0) << " m/s, gravity = " << number(p.gravity) << " m/s^2, force = "
-             << number(p.force) << " N\n";
+        text << "physical   " << physical.echo_text() << "\n";
+        if (physical.has_material())  // the bead's mass and stiffness are computed, not typed
+          text << "bead       m = " << to_decimal_string(p.m, 10) << " kg, k = " << to_decimal_string(p.k, 10)
+               << " N/m^(3/2) (from the material)\n";
       } else {
         gamma_value = parse_real<Real>(*gamma, "gamma");
         g_value = g ? parse_real<Real>(*g, "g") : Real(0);

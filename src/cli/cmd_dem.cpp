@@ -4,6 +4,7 @@
 // include/viscor/dem/), and the reverse: the e a deck damping entry produces.
 #include "cli_common.hpp"
 #include "command_registry.hpp"
+#include "physical_options.hpp"
 
 #include <viscor/dem/dem_calibration.hpp>
 #include <viscor/dem/deck_snippet.hpp>
@@ -31,6 +32,7 @@ struct dem_command {
   std::string target_e, deck_damping, deck_en, v0, gravity, force = "0";
   std::string speeds = "0.001,0.01,0.1,1,10";
   int digits = 15;
+  bool strict = false;
 
   void require(const std::string& value, const char* option, const char* what) const {
     if (value.empty()) throw invalid_parameter(std::string("dem needs ") + option + " (" + what + ")");
@@ -49,6 +51,17 @@ struct dem_command {
     p["gravity"] = gravity;
     p["force"] = force;
     return p;
+  }
+
+  /// A negative gravity is refused; values far outside their range are warned about (refused under --strict).
+  void check_units() const {
+    require_gravity_towards_wall(std::optional<std::string>(gravity));
+    const auto given = [](const std::string& v) { return v.empty() ? std::nullopt : std::optional<std::string>(v); };
+    check_plausible_unit(physical_quantity::youngs_modulus, given(youngs_modulus), "--youngs-modulus", strict);
+    check_plausible_unit(physical_quantity::density, given(density), "--density", strict);
+    check_plausible_unit(physical_quantity::radius, given(radius), "--radius", strict);
+    check_plausible_unit(physical_quantity::speed, given(v0), "--v0", strict);
+    check_plausible_unit(physical_quantity::gravity, given(gravity), "--gravity", strict);
   }
 
   void run() const {
@@ -73,6 +86,7 @@ struct dem_command {
     require(radius, "--radius", "m");
     require(density, "--density", "kg/m^3");
     require(gravity, "--gravity", "m/s^2 towards the wall; 0 for none");
+    check_units();
     if (!deck_damping.empty() && !deck_en.empty())
       throw invalid_parameter("give either --deck-damping (the deck's betan) or --deck-en (YADE's en), not both");
     if (!deck_en.empty() && model.damping != dem::damping_model::mindlin)
@@ -287,6 +301,7 @@ void setup(CLI::App& app) {
       ->capture_default_str();
   app.add_option("--speeds", cmd->speeds, "reverse: comma-separated impact speeds, m/s")->capture_default_str();
   app.add_option("--digits", cmd->digits, "working precision in decimal digits")->capture_default_str();
+  add_strict_flag(app, cmd->strict);
   app.callback([cmd] { cmd->run(); });
 }
 

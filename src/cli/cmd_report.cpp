@@ -281,11 +281,16 @@ void run_report(const report_options& o) {
       }
     }
   }
-  if (!o.values.empty()) output_options::write_atomically(o.values, values.str());
-  if (o.output.empty())
+  if (!o.values.empty()) {
+    output_options::write_atomically(o.values, values.str());
+    output_options::say_written(o.values, values.str());
+  }
+  if (o.output.empty()) {
     std::cout << out.str() << std::flush;
-  else
+  } else {
     output_options::write_atomically(o.output, out.str());
+    output_options::say_written(o.output, out.str());
+  }
 }
 
 struct baseline_options {

@@ -4,6 +4,7 @@
 #include "cli_common.hpp"
 #include "command_registry.hpp"
 #include "data_directory.hpp"
+#include "physical_options.hpp"
 #include "scene_json.hpp"
 #include "surrogate_files.hpp"
 
@@ -78,9 +79,11 @@ std::optional<error_map> find_map(const std::string& dir, const std::string& fro
 struct scene_command {
   output_options output;
   std::string path, maps;
+  bool strict = false;
 
   void run() const {
     const scene_file file = read_scene_json(path);
+    check_plausible_scene_units(file.scene, strict, [&](const std::string& field) { return file.locate(field); });
     int digits = 0;
     try {
       digits = scene_digits(file.scene.tolerance);
@@ -226,6 +229,7 @@ struct scene_command {
 void setup(CLI::App& app) {
   auto cmd = std::make_shared<scene_command>();
   app.add_option("file", cmd->path, "scene file (JSON; format in docs/scenes.md)")->required();
+  add_strict_flag(app, cmd->strict);
   cmd->output.add_to(app);
   app.add_option("--error-maps", cmd->maps,
                  "directory of error maps <law>.csv (default: the scene's error_maps, then $VISCOR_ERROR_MAPS, then "

@@ -92,7 +92,7 @@ struct run_options {
   int threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
 
   void add_to(CLI::App& app) {
-    app.add_option("spec", spec_path, "grid specification, JSON (README, section 'Grid specification')");
+    app.add_option("spec", spec_path, "grid specification, JSON (docs/tables.md, section 'Grid specification')");
     app.add_option("-o,--output", output, "output table OUT.csv (its sidecar is OUT.csv.json)");
     app.add_flag("--resume", resume, "continue an interrupted run from OUT.csv.partial");
     app.add_option("--shard", shard_text, "compute only shard i of N (0 <= i < N): rows with index % N == i");

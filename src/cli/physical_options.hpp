@@ -9,19 +9,63 @@
 
 #include "cli_common.hpp"
 
+#include <viscor/core/plausible_units.hpp>
 #include <viscor/core/scaling.hpp>
 #include <viscor/scenes/scene.hpp>
 
+#include <cstdlib>
+#include <iostream>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace viscor::cli {
 
+/// Warns on stderr when the physical input `text` of `option` lies far outside the
+/// plausible range of its quantity (a unit mistake, most likely); with `strict`, refuses it.
+inline void check_plausible_unit(physical_quantity q, const std::optional<std::string>& text, const std::string& option,
+                                 bool strict) {
+  if (!text) return;
+  const double value = std::strtod(text->c_str(), nullptr);  // a coarse check; the exact parse comes later
+  const std::optional<std::string> message = implausible_unit(q, value, option, *text);
+  if (!message) return;
+  if (strict) throw invalid_parameter(*message + " (refused under --strict)");
+  std::cerr << "viscor: warning: " << *message << " (--strict makes this an error)\n";
+}
+
+/// --strict: inputs outside their plausible range are errors, not warnings.
+inline void add_strict_flag(CLI::App& app, bool& strict) {
+  app.add_flag("--strict", strict,
+               "refuse physical inputs far outside their plausible range (a unit mistake, most likely) instead of "
+               "warning about them");
+}
+
+/// Refuses a negative --gravity with the sign convention, quoting the value as typed.
+inline void require_gravity_towards_wall(const std::optional<std::string>& text) {
+  if (text && std::strtod(text->c_str(), nullptr) < 0) throw invalid_parameter("--" + negative_gravity_message(*text));
+}
+
+/// The same checks for a scene file's bead, wall and load; `where` names the field's line.
+template <class Locate>
+void check_plausible_scene_units(const scene_description& d, bool strict, const Locate& where) {
+  const auto check = [&](physical_quantity q, const std::optional<std::string>& v, const std::string& field) {
+    check_plausible_unit(q, v, where(field) + field, strict);
+  };
+  if (std::strtod(d.gravity.c_str(), nullptr) < 0) throw invalid_parameter(where("gravity") + negative_gravity_message(d.gravity));
+  check(physical_quantity::youngs_modulus, d.youngs_modulus, "bead.youngs_modulus");
+  check(physical_quantity::youngs_modulus, d.wall_youngs_modulus, "wall.youngs_modulus");
+  check(physical_quantity::density, d.density, "bead.density");
+  check(physical_quantity::radius, d.radius, "bead.radius");
+  check(physical_quantity::gravity, d.gravity, "gravity");
+  for (const std::string& v : d.velocities) check(physical_quantity::speed, v, "velocities");
+  check(physical_quantity::speed, d.velocity_to, "velocities.to");
+}
+
 struct physical_options {
   std::optional<std::string> m, k, v0, gamma0, gravity, force;
   std::optional<std::string> youngs_modulus, poisson_ratio, radius, density;
   std::optional<std::string> deprecated_force;  ///< --F, the spelling before 0.2.0
+  bool strict = false;  ///< refuse, not only warn about, inputs outside their plausible range
 
   /// Adds the options; `with_gamma0` false for commands that compute gamma0 (calibrate).
   void add_to(CLI::App& app, bool with_gamma0 = true, bool with_materials = true) {
@@ -39,6 +83,7 @@ struct physical_options {
       app.add_option("--radius", radius, "bead radius, m (with --youngs-modulus)");
       app.add_option("--density", density, "bead density, kg/m^3 (instead of --m, with --radius)");
     }
+    add_strict_flag(app, strict);
   }
 
   bool has_material() const { return youngs_modulus || poisson_ratio || radius || density; }
@@ -82,6 +127,17 @@ struct physical_options {
     if (!gravity)
       throw invalid_parameter(command + ": physical mode needs --gravity (m/s^2 towards the wall; 0 for none): "
                                         "the load changes the result, so it never defaults");
+    require_gravity_towards_wall(gravity);
+    check_plausible_units();
+  }
+
+  /// Warns (refuses under --strict) about inputs far outside their quantity's range.
+  void check_plausible_units() const {
+    check_plausible_unit(physical_quantity::youngs_modulus, youngs_modulus, "--youngs-modulus", strict);
+    check_plausible_unit(physical_quantity::density, density, "--density", strict);
+    check_plausible_unit(physical_quantity::radius, radius, "--radius", strict);
+    check_plausible_unit(physical_quantity::speed, v0, "--v0", strict);
+    check_plausible_unit(physical_quantity::gravity, gravity, "--gravity", strict);
   }
 
   /// The bead (m, k) at the working precision; from the material when given.
@@ -118,6 +174,19 @@ struct physical_options {
     p.force = force ? parse_real<Real>(*force, "force") : Real(0);
     p.validate();
     return p;
+  }
+
+  /// The inputs as the user wrote them, for the readable output: "m = 2.05e-3 kg, ...".
+  std::string echo_text() const {
+    std::string s;
+    auto put = [&](const char* name, const std::optional<std::string>& v, const char* unit) {
+      if (v) s += std::string(s.empty() ? "" : ", ") + name + " = " + *v + (*unit ? " " : "") + unit;
+    };
+    put("m", m, "kg"), put("k", k, "N/m^alpha"), put("youngs_modulus", youngs_modulus, "Pa");
+    put("poisson_ratio", poisson_ratio, ""), put("radius", radius, "m"), put("density", density, "kg/m^3");
+    put("gamma0", gamma0, ""), put("v0", v0, "m/s"), put("gravity", gravity, "m/s^2");
+    put("force", force ? force : std::optional<std::string>("0"), "N");
+    return s;
   }
 
   /// The inputs as given (decimal text), under the option names.

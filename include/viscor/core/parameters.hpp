@@ -32,6 +32,26 @@ void require_positive(const Real& x, const std::string& name) {
   if (!(x > 0)) throw invalid_parameter("parameter " + name + " must be > 0, got " + to_decimal_string(x));
 }
 
+/// Throws invalid_parameter unless the gravitational acceleration is finite and >= 0.
+/// viscor's sign convention is "towards the wall is positive": some DEM codes write
+/// gravity as -9.81 along z, and taking that sign here would silently turn the load
+/// around (the damping changes by several percent), so a negative value is refused.
+/// The message refusing a negative gravity `value` (as the user wrote it).
+inline std::string negative_gravity_message(const std::string& value) {
+  return "gravity " + value +
+         " is negative: gravity is the acceleration towards the wall, counted positive (a bead dropped on a floor "
+         "under Earth's gravity: 9.81, not -9.81); a load that pulls the bead away from the wall is a negative force";
+}
+
+/// Throws invalid_parameter unless the gravitational acceleration is finite and >= 0.
+/// viscor counts gravity positive towards the wall; some DEM codes write it as -9.81
+/// along z, and taking that sign here would silently turn the load around.
+template <class Real>
+void require_gravity_towards_wall(const Real& gravity) {
+  require_finite(gravity, "gravity");
+  if (gravity < 0) throw invalid_parameter(negative_gravity_message(to_decimal_string(gravity, 6)));
+}
+
 /// The scaled problem u'' + gamma d/dtau(u_+^beta) + u_+^alpha = g, u(0)=0, u'(0)=1.
 template <class Real>
 struct impact_parameters {

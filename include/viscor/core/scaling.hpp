@@ -26,7 +26,7 @@ struct physical_parameters {
     require_positive(k, "k");
     require_non_negative(gamma0, "gamma0");
     require_positive(v0, "v0");
-    require_finite(gravity, "gravity");
+    require_gravity_towards_wall(gravity);
     require_finite(force, "F");
   }
 };

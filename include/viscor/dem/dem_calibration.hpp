@@ -143,7 +143,7 @@ dem_deck<Real> dem_deck_for(const dem_model& model, const dem_impact<Real>& impa
   if (!(target_e > 0 && target_e < 1))
     throw invalid_parameter("parameter target_e must be in (0, 1), got " + to_decimal_string(target_e));
   require_positive(impact.v0, "v0");
-  require_finite(impact.gravity, "gravity");
+  require_gravity_towards_wall(impact.gravity);
   require_finite(impact.force, "force");
   dem_deck<Real> d;
   d.contact = model_contact(model, impact);
