@@ -1,6 +1,7 @@
 // calibrate_gamma / calibrate_gamma0: round trips against exact solutions (Tsuji at
 // g = 0 by the Antypov-Elliott relation; the linear law at any g), monotonicity of
 // e in gamma (which the bracketing relies on), and the unreachable targets.
+#include "scaling_reference.hpp"
 #include "test_utils.hpp"
 
 #include <viscor/scenes/calibration.hpp>
@@ -16,6 +17,8 @@ namespace {
 
 using test::absolute_close;
 using test::relative_close;
+using test::scaling_reference;
+using test::scaling_reference_row;
 
 template <class Real>
 class calibration_typed : public ::testing::Test {};
@@ -136,6 +139,14 @@ TEST(calibration, physical_steel_bead_with_and_without_gravity) {
   const physical_calibration<double> without = calibrate_gamma0(law, m, k, v0, 0.0, 0.0, target, options);
   EXPECT_EQ(without.scaled.g, 0.0);
   EXPECT_PRED_FORMAT3(relative_close<double>, with.scaled.g, 5.1224e-4, 1e-4);  // docs/report-notes.md value
+  // gamma0 against eq. (2) evaluated outside the library (tests/data/scaling_reference.csv):
+  // gamma = gamma0 * (gamma at gamma0 = 1), and g at this bead.
+  const scaling_reference_row unit = scaling_reference("steel_bead_unit_damping", "kuwabara_kono");
+  const double damping_factor = std::stod(unit.gamma);
+  EXPECT_PRED_FORMAT3(relative_close<double>, with.scaled.g, std::stod(unit.g), 1e-14);
+  for (const auto* c : {&with, &without})
+    EXPECT_PRED_FORMAT3(relative_close<double>, c->gamma0 * damping_factor, c->scaled.gamma, 1e-14);
+  EXPECT_PRED_FORMAT3(relative_close<double>, with.time_scale, std::stod(unit.time_scale), 1e-14);
   // Forward again through eq. (2) and the solver: the target comes back.
   for (const auto* c : {&with, &without}) {
     physical_parameters<double> p;

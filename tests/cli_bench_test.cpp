@@ -36,11 +36,17 @@ TEST(CliBenchSurrogate, JsonHasBothStreamsWithTimesAndTheTaylorRatio) {
   for (const auto& row : j["rows"]) {
     EXPECT_EQ(row["law"], "kuwabara_kono");
     EXPECT_GT(row["median_ns"].get<double>(), 0);
+    // Order statistics of the same timings (surrogate_timing.hpp): median <= p99 <= the
+    // largest single timing, and the slowest point's least timing is at most that.
     EXPECT_LE(row["median_ns"].get<double>(), row["p99_ns"].get<double>());
-    EXPECT_GE(row["max_ns"].get<double>(), row["median_ns"].get<double>() / 2);
+    EXPECT_LE(row["p99_ns"].get<double>(), row["raw_max_ns"].get<double>());
+    EXPECT_LE(row["max_ns"].get<double>(), row["raw_max_ns"].get<double>());
     EXPECT_GT(row["stream_mean_ns"].get<double>(), 0);
+    EXPECT_GT(row["taylor_double_mean_ns"].get<double>(), 0);
     EXPECT_EQ(row["taylor_points"], 3);
-    EXPECT_GT(row["taylor_over_surrogate"].get<double>(), 1);  // a Taylor solve is no faster than the surrogate
+    // The ratio is what it says (no claim on the timings themselves: they depend on the machine).
+    EXPECT_DOUBLE_EQ(row["taylor_over_surrogate"].get<double>(),
+                     row["taylor_double_mean_ns"].get<double>() / row["stream_mean_ns"].get<double>());
   }
   EXPECT_TRUE(j["skipped_without_surrogate"].empty());
 }

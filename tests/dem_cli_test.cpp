@@ -3,6 +3,7 @@
 // snippet, and bad input: exit 2, the offending value named, no output file.
 #include <viscor/dem/dem_calibration.hpp>
 
+#include "scaling_reference.hpp"
 #include "test_utils.hpp"
 
 #include <gtest/gtest.h>
@@ -34,6 +35,13 @@ TEST(CliDem, DeckFieldsReproduceTheTarget) {
     impact.bead = {2e11, 0.3, 1e-3, 7800}, impact.v0 = 0.01, impact.gravity = 9.81;
     const double deck = std::stod(j["deck"]["damping"].get<std::string>());
     EXPECT_NEAR(viscor::dem::e_for_deck(m, impact, deck).e, 0.7, 1e-10);
+    // k, g, T and gamma0 against eq. (2) evaluated outside the library (gamma at gamma0 = 1).
+    const auto ref = viscor::test::scaling_reference("dem_steel_wall_unit_damping", j["law"]["name"]);
+    auto number = [&](const char* field) { return std::stod(j[field].get<std::string>()); };
+    EXPECT_NEAR(number("k"), std::stod(ref.k), 1e-15 * std::stod(ref.k));
+    EXPECT_NEAR(number("g"), std::stod(ref.g), 1e-14 * std::stod(ref.g));
+    EXPECT_NEAR(number("time_scale_s"), std::stod(ref.time_scale), 1e-14 * std::stod(ref.time_scale));
+    EXPECT_NEAR(number("gamma0") * std::stod(ref.gamma), number("gamma"), 1e-14 * number("gamma"));
     // the wall modulus as the code needs it
     const double E = std::stod(j["deck"]["youngs_modulus"].get<std::string>());
     EXPECT_NEAR(E, j["code"] == "lammps" ? 2 * 2e11 / 1.3 : 2e11, 1e-15 * E);

@@ -8,6 +8,7 @@
 #include <viscor/exact/exact_tsuji.hpp>
 
 #include "dem_static_force_data.hpp"
+#include "scaling_reference.hpp"
 #include "test_utils.hpp"
 
 #include <gtest/gtest.h>
@@ -111,6 +112,26 @@ TEST(DemConventions, DeckGivesThePhysicalForce) {
           EXPECT_NEAR(f, physical, 1e-12 * std::abs(physical));
         }
     }
+}
+
+// The deck's gamma0 and scaled load against eq. (2) evaluated outside the library
+// (tests/data/scaling_reference.csv: k and m from the material, gamma at gamma0 = 1),
+// so that a wrong scaling cannot cancel between calibrate and e_for_deck.
+TEST(DemConventions, DeckScalingMatchesIndependentReference) {
+  struct case_ {
+    const char *code, *damping, *law;
+  };
+  for (const case_& c : {case_{"lammps", "velocity", "hertz_linear_damping"}, case_{"lammps", "tsuji", "tsuji"},
+                         case_{"lammps", "viscoelastic", "kuwabara_kono"}, case_{"liggghts", "hertz", "tsuji"}}) {
+    SCOPED_TRACE(std::string(c.code) + " " + c.damping);
+    const test::scaling_reference_row ref = test::scaling_reference("dem_steel_wall_unit_damping", c.law);
+    dem_impact<double> impact;
+    impact.bead = {2e11, 0.3, 1e-3, 7800}, impact.kind = contact_kind::wall, impact.v0 = 0.01, impact.gravity = 9.81;
+    const dem_deck<double> d = dem_deck_for(find_dem_model(c.code, c.damping), impact, 0.7);
+    EXPECT_NEAR(d.contact.stiffness, std::stod(ref.k), 1e-14 * std::stod(ref.k));
+    EXPECT_NEAR(d.calibration.scaled.g, std::stod(ref.g), 1e-14 * std::stod(ref.g));
+    EXPECT_NEAR(d.gamma0 * std::stod(ref.gamma), d.calibration.scaled.gamma, 1e-14 * d.calibration.scaled.gamma);
+  }
 }
 
 template <class Real>

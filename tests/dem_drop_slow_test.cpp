@@ -12,7 +12,7 @@ using namespace viscor::test::dem_drop;
 
 void run_sweep(viscor::dem::dem_code code) {
   const auto program = find_program(program_name(code));
-  if (!program) GTEST_SKIP() << program_name(code) << " is not installed (tools/install-deps.sh installs it)";
+  if (!program) VISCOR_SKIP_OR_FAIL_MISSING(program_name(code) << " is not installed (tools/install-deps.sh installs it)");
   for (const auto& model : viscor::dem::dem_models) {
     if (model.code != code) continue;
     for (const auto& m : drop_materials())
@@ -25,7 +25,7 @@ void run_sweep(viscor::dem::dem_code code) {
 // free and pressed together by 1e-4 N on each.
 void run_pair_sweep(viscor::dem::dem_code code) {
   const auto program = find_program(program_name(code));
-  if (!program) GTEST_SKIP() << program_name(code) << " is not installed (tools/install-deps.sh installs it)";
+  if (!program) VISCOR_SKIP_OR_FAIL_MISSING(program_name(code) << " is not installed (tools/install-deps.sh installs it)");
   for (const auto& model : viscor::dem::dem_models) {
     if (model.code != code) continue;
     for (const auto& m : drop_materials())
@@ -45,7 +45,7 @@ TEST(DemDropSweep, Liggghts) { run_sweep(viscor::dem::dem_code::liggghts); }
 void check_builtin(viscor::dem::dem_code code) {
   using namespace viscor::dem;
   const auto program = find_program(program_name(code));
-  if (!program) GTEST_SKIP() << program_name(code) << " is not installed (tools/install-deps.sh installs it)";
+  if (!program) VISCOR_SKIP_OR_FAIL_MISSING(program_name(code) << " is not installed (tools/install-deps.sh installs it)");
   for (const auto& model : dem_models) {
     if (model.code != code || model.deck_kind != deck_damping_kind::coefficient_of_restitution) continue;
     for (const auto& m : drop_materials())

@@ -13,7 +13,7 @@ using namespace viscor::test::dem_drop;
 
 void run_subset(viscor::dem::dem_code code) {
   const auto program = find_program(program_name(code));
-  if (!program) GTEST_SKIP() << program_name(code) << " is not installed (tools/install-deps.sh installs it)";
+  if (!program) VISCOR_SKIP_OR_FAIL_MISSING(program_name(code) << " is not installed (tools/install-deps.sh installs it)");
   for (const auto& model : viscor::dem::dem_models) {
     if (model.code != code) continue;
     expect_drop_reproduces_target(*program, model, drop_materials()[1], 0.01, 9.81);

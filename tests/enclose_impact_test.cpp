@@ -199,7 +199,8 @@ TEST(ProvenImpact, ContainsCommittedCertifiedRows) {
     auto within = [&](const ball& enclosure, const std::string& committed) {
       const ball c = ball::from_decimal(committed);
       const ball unit = c.abs_upper() * ball::from_decimal("1e" + std::to_string(1 - digits));
-      return enclosure.overlaps(c.widened(unit));
+      // and narrow enough to decide that digit: its radius within the same unit
+      return enclosure.overlaps(c.widened(unit)) && enclosure.rad_double() <= unit.mid_double();
     };
     EXPECT_TRUE(within(proof.e, f[7])) << line << "\n proof e " << proof.e.str(35);
     EXPECT_TRUE(within(proof.contact_time, f[9])) << line << "\n proof T " << proof.contact_time.str(35);

@@ -1,4 +1,6 @@
-// Scaling of eq. (2): round trips, and the report's worked numbers.
+// Scaling of eq. (2): against values computed outside the library, round trips,
+// and the report's worked numbers.
+#include "scaling_reference.hpp"
 #include "test_utils.hpp"
 
 #include <viscor/core/scaling.hpp>
@@ -9,6 +11,35 @@ namespace {
 template <class Real>
 class Scaling : public ::testing::Test {};
 TYPED_TEST_SUITE(Scaling, all_real_types);
+
+// tests/data/scaling_reference.csv (tools/scaling_reference.py, derived from the
+// physical equation of motion, not from the exponents of scaling.hpp).
+TYPED_TEST(Scaling, MatchesIndependentReference) {
+  using Real = TypeParam;
+  using std::abs;
+  // a few roundings of the decimal inputs through pow
+  const Real tol = 256 * epsilon<Real>();
+  int checked = 0;
+  for (const auto& r : scaling_reference_rows()) {
+    SCOPED_TRACE(r.case_name + " " + r.law);
+    physical_parameters<Real> p;
+    p.m = parse_real<Real>(r.m, "m"), p.k = parse_real<Real>(r.k, "k"), p.gamma0 = parse_real<Real>(r.gamma0, "gamma0");
+    p.v0 = parse_real<Real>(r.v0, "v0"), p.gravity = parse_real<Real>(r.gravity, "gravity");
+    p.force = parse_real<Real>(r.force, "F");
+    const contact_law law = law_by_name(r.law);
+    const scaled_parameters<Real> s = to_scaled(law, p);
+    EXPECT_PRED_FORMAT3(relative_close<Real>, s.gamma, parse_real<Real>(r.gamma, "gamma"), tol);
+    EXPECT_PRED_FORMAT3(relative_close<Real>, s.g, parse_real<Real>(r.g, "g"), tol);
+    EXPECT_PRED_FORMAT3(relative_close<Real>, s.time_scale, parse_real<Real>(r.time_scale, "T"), tol);
+    // and back: the reference's gamma and g give the reference's gamma0 and F
+    const physical_parameters<Real> q = to_physical(law, parse_real<Real>(r.gamma, "gamma"),
+                                                    parse_real<Real>(r.g, "g"), p.m, p.k, p.v0, p.gravity);
+    EXPECT_PRED_FORMAT3(relative_close<Real>, q.gamma0, p.gamma0, tol);
+    EXPECT_PRED_FORMAT3(absolute_close<Real>, q.force, p.force, Real(1e3 * tol * (abs(p.force) + p.m * abs(p.gravity))));
+    ++checked;
+  }
+  EXPECT_GE(checked, 26);  // 3 cases x 5 laws, unit damping x 5 laws, the scene x 3 speeds, the DEM bead x 3 laws
+}
 
 TYPED_TEST(Scaling, PhysicalScaledPhysicalRoundTrip) {
   using Real = TypeParam;

@@ -1,6 +1,7 @@
 // viscor scene / calibrate / errormap from the command line: rows, the round trip
 // through calibration, bad scenes (a clear error naming the field and line, exit
 // code 2, no output file), and error maps used by a scene.
+#include "scaling_reference.hpp"
 #include "test_utils.hpp"
 
 #include <viscor/certify/extern_templates.hpp>
@@ -70,6 +71,9 @@ TEST(scene_cli, rows_and_calibration_round_trip) {
   EXPECT_EQ(hit[4], "rebound");
   EXPECT_EQ(hit[5], "false");
   EXPECT_LE(std::abs(std::stod(hit[6]) - 0.893), 1e-8) << rows[2];
+  // The load of this row against eq. (2) evaluated outside the library (the same bead, v0 and gravity).
+  const auto ref = viscor::test::scaling_reference("steel_bead_unit_damping", "kuwabara_kono");
+  EXPECT_NEAR(std::stod(hit[3]), std::stod(ref.g), 1e-14 * std::stod(ref.g)) << rows[2];
   EXPECT_LE(std::stod(hit[9]), 1e-8);
   EXPECT_GT(std::stod(hit[8]), 0);  // contact time, s (tens of microseconds for this bead)
   EXPECT_LT(std::stod(hit[8]), 1e-3);

@@ -1,6 +1,7 @@
 // Scenes (scene.hpp): Hertz stiffness and mass from materials, resolution of a
 // description (errors naming the field), the calibrate-then-evaluate round trip,
 // and rows in physical units.
+#include "scaling_reference.hpp"
 #include "test_utils.hpp"
 
 #include <viscor/exact/exact_solutions.hpp>
@@ -83,6 +84,23 @@ TEST(scene, resolution_errors_name_the_field) {
   EXPECT_NE(message(d).find("missing field bead"), std::string::npos) << message(d);
   d.mass = "-1", d.stiffness = "1e9";
   EXPECT_NE(message(d).find("bead.m must be > 0"), std::string::npos) << message(d);
+}
+
+// The steel bead from its material: each row's gamma and g against eq. (2) evaluated
+// outside the library (tests/data/scaling_reference.csv, k and m from the material there too).
+TEST(scene, steel_bead_rows_match_independent_scaling) {
+  scene_description d = steel_bead();
+  d.velocities = {"0.1", "0.246", "1"};
+  const resolved_scene<double> s = resolve_scene<double>(d);
+  int rows = 0;
+  run_scene(s, nullptr, [&](const scene_row<double>& row) {
+    const char* v0 = d.velocities[rows++].c_str();
+    SCOPED_TRACE(v0);
+    const test::scaling_reference_row ref = test::scaling_reference(std::string("scene_steel_v") + v0, "kuwabara_kono");
+    EXPECT_PRED_FORMAT3(relative_close<double>, row.gamma, std::stod(ref.gamma), 1e-14);
+    EXPECT_PRED_FORMAT3(relative_close<double>, row.g, std::stod(ref.g), 1e-14);
+  });
+  EXPECT_EQ(rows, 3);
 }
 
 // Acceptance: calibrate gamma0 from e, evaluate with that gamma0, get e back.

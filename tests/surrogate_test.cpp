@@ -97,7 +97,7 @@ class CommittedSurrogate : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(CommittedSurrogate, GridLookupFindsThePatchOfTheTreeWalk) {
   const auto s = viscor::test::load_committed_surrogate(GetParam());
-  if (!s) GTEST_SKIP() << "no committed surrogate for " << GetParam();
+  if (!s) VISCOR_SKIP_OR_FAIL_MISSING("no committed surrogate for " << GetParam());
   std::mt19937_64 rng(17);
   auto u = [&] { return static_cast<double>(rng() >> 11) * 0x1.0p-53; };
   for (const patch_tree* t : {&s->low_load, &s->high_load}) {
@@ -119,7 +119,7 @@ TEST_P(CommittedSurrogate, GridLookupFindsThePatchOfTheTreeWalk) {
 
 TEST_P(CommittedSurrogate, WritesTheCommittedFileBackByteForByte) {
   const auto s = viscor::test::load_committed_surrogate(GetParam());
-  if (!s) GTEST_SKIP() << "no committed surrogate for " << GetParam();
+  if (!s) VISCOR_SKIP_OR_FAIL_MISSING("no committed surrogate for " << GetParam());
   std::ifstream in(viscor::test::surrogate_path(GetParam()));
   std::stringstream committed, written;
   committed << in.rdbuf();
@@ -129,7 +129,7 @@ TEST_P(CommittedSurrogate, WritesTheCommittedFileBackByteForByte) {
 
 TEST_P(CommittedSurrogate, FmaPathIsBitIdenticalToThePortablePath) {
   const auto s = viscor::test::load_committed_surrogate(GetParam());
-  if (!s) GTEST_SKIP() << "no committed surrogate for " << GetParam();
+  if (!s) VISCOR_SKIP_OR_FAIL_MISSING("no committed surrogate for " << GetParam());
   if (!cpu_has_fma()) GTEST_SKIP() << "one path only here (no AVX2 + FMA, or the build targets FMA)";
   std::mt19937_64 rng(23);
   auto u = [&] { return static_cast<double>(rng() >> 11) * 0x1.0p-53; };
@@ -149,7 +149,7 @@ TEST_P(CommittedSurrogate, FmaPathIsBitIdenticalToThePortablePath) {
 
 TEST_P(CommittedSurrogate, FileReadsBackIdentically) {
   const auto s = viscor::test::load_committed_surrogate(GetParam());
-  if (!s) GTEST_SKIP() << "no committed surrogate for " << GetParam();
+  if (!s) VISCOR_SKIP_OR_FAIL_MISSING("no committed surrogate for " << GetParam());
   std::stringstream text;
   write_cor_surrogate(text, *s);
   const std::string path = temp_path_of_this_process(std::string(GetParam()) + ".roundtrip.surrogate");
@@ -174,7 +174,7 @@ TEST_P(CommittedSurrogate, ThresholdPowerIsAppliedAndReadBack) {
   // and setting threshold_power = p must leave gamma_c unchanged, also after a write
   // and read (file version 2 when p != 0).
   const auto s = viscor::test::load_committed_surrogate(GetParam());
-  if (!s) GTEST_SKIP() << "no committed surrogate for " << GetParam();
+  if (!s) VISCOR_SKIP_OR_FAIL_MISSING("no committed surrogate for " << GetParam());
   cor_surrogate t = *s;
   const double p = t.threshold_power + 0.75;
   auto& line = t.log_gamma_c;
@@ -204,7 +204,7 @@ TEST_P(CommittedSurrogate, ThresholdPowerIsAppliedAndReadBack) {
 
 TEST_P(CommittedSurrogate, OutsideTheDomainNothingIsReturned) {
   const auto s = viscor::test::load_committed_surrogate(GetParam());
-  if (!s) GTEST_SKIP() << "no committed surrogate for " << GetParam();
+  if (!s) VISCOR_SKIP_OR_FAIL_MISSING("no committed surrogate for " << GetParam());
   for (auto [gamma, g] : std::vector<std::pair<double, double>>{{-1e-3, 1}, {1.0001, 1}, {0.1, -0.51}, {0.1, 1.1e4},
                                                                {NAN, 1}, {0.1, NAN}, {INFINITY, 0}})
     EXPECT_FALSE((*s)(gamma, g).in_domain) << gamma << " " << g;
@@ -215,7 +215,7 @@ TEST_P(CommittedSurrogate, OutsideTheDomainNothingIsReturned) {
 
 TEST_P(CommittedSurrogate, MeetsItsBoundOnASubsampleOfItsVerificationTable) {
   const auto s = viscor::test::load_committed_surrogate(GetParam());
-  if (!s) GTEST_SKIP() << "no committed surrogate for " << GetParam();
+  if (!s) VISCOR_SKIP_OR_FAIL_MISSING("no committed surrogate for " << GetParam());
   ASSERT_TRUE(s->bound.verified());
   const auto refs = viscor::test::load_verification_table(GetParam(), /*every=*/10);
   ASSERT_GE(refs.size(), 2000u);
@@ -225,7 +225,7 @@ TEST_P(CommittedSurrogate, MeetsItsBoundOnASubsampleOfItsVerificationTable) {
 
 TEST_P(CommittedSurrogate, APerturbedSurrogateFailsTheCheck) {
   auto s = viscor::test::load_committed_surrogate(GetParam());
-  if (!s) GTEST_SKIP() << "no committed surrogate for " << GetParam();
+  if (!s) VISCOR_SKIP_OR_FAIL_MISSING("no committed surrogate for " << GetParam());
   // 1e-11 added to the constant term of every low-load patch: a change of 1e-11 gamma in e^2.
   for (std::size_t p = 0; p < s->low_load.patches.size(); ++p)
     s->low_load.coefficients[p * static_cast<std::size_t>(s->low_load.order * s->low_load.order)] += 1e-11;
@@ -235,7 +235,7 @@ TEST_P(CommittedSurrogate, APerturbedSurrogateFailsTheCheck) {
 
 TEST_P(CommittedSurrogate, InverseRoundTrips) {
   const auto s = viscor::test::load_committed_surrogate(GetParam());
-  if (!s) GTEST_SKIP() << "no committed surrogate for " << GetParam();
+  if (!s) VISCOR_SKIP_OR_FAIL_MISSING("no committed surrogate for " << GetParam());
   std::mt19937_64 rng(41);
   auto u = [&] { return static_cast<double>(rng() >> 11) * 0x1.0p-53; };
   int solved = 0;
@@ -261,7 +261,7 @@ TEST_P(CommittedSurrogate, InverseRoundTrips) {
 
 TEST_P(CommittedSurrogate, EvaluateUsesItWhereItsBoundMeetsTheTolerance) {
   const auto s = viscor::test::load_committed_surrogate(GetParam());
-  if (!s) GTEST_SKIP() << "no committed surrogate for " << GetParam();
+  if (!s) VISCOR_SKIP_OR_FAIL_MISSING("no committed surrogate for " << GetParam());
   const viscor::contact_law law = viscor::law_by_name(GetParam());
   const surrogate_source source(*s);
   viscor::evaluate_options options;
@@ -299,6 +299,35 @@ TEST_P(CommittedSurrogate, EvaluateUsesItWhereItsBoundMeetsTheTolerance) {
   // A surrogate of another law is refused.
   const viscor::contact_law other = viscor::law_by_name(std::string(GetParam()) == "linear" ? "tsuji" : "linear");
   EXPECT_THROW(viscor::evaluator<double>(other, options), viscor::invalid_parameter);
+}
+
+// The same surrogate without a verification (safety factor 0: no bound is claimed) is
+// never used, even where the verified one is; a damaged (truncated) file is not read.
+TEST_P(CommittedSurrogate, UnverifiedOrDamagedIsRefused) {
+  const auto s = viscor::test::load_committed_surrogate(GetParam());
+  if (!s) VISCOR_SKIP_OR_FAIL_MISSING("no committed surrogate for " << GetParam());
+  const viscor::contact_law law = viscor::law_by_name(GetParam());
+  cor_surrogate unverified = *s;
+  unverified.bound.safety_factor = 0;
+  ASSERT_FALSE(unverified.bound.verified());
+  const surrogate_source verified_source(*s), unverified_source(unverified);
+  viscor::evaluate_options verified_options, unverified_options;
+  verified_options.surrogate = &verified_source;
+  unverified_options.surrogate = &unverified_source;
+  const viscor::evaluator<double> verified(law, verified_options), refused(law, unverified_options);
+  for (auto [gamma, g] : std::vector<std::pair<double, double>>{{0.05, 1.0}, {0.3, -0.2}, {0.9, 0.0}}) {
+    ASSERT_EQ(verified(gamma, g, 1e-10).method, viscor::evaluation_method::surrogate) << gamma << " " << g;
+    const auto r = refused(gamma, g, 1e-10);
+    EXPECT_NE(r.method, viscor::evaluation_method::surrogate) << gamma << " " << g;
+    EXPECT_LE(r.empirical_bound, 1e-10);
+  }
+  std::stringstream written;
+  write_cor_surrogate(written, *s);
+  const std::string text = written.str();
+  const std::string damaged = ::testing::TempDir() + "damaged_" + GetParam() + ".surrogate";
+  std::ofstream(damaged) << text.substr(0, text.size() / 2);
+  EXPECT_THROW(read_cor_surrogate(damaged), viscor::parse_error);
+  std::remove(damaged.c_str());
 }
 
 INSTANTIATE_TEST_SUITE_P(Laws, CommittedSurrogate,

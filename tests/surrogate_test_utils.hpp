@@ -6,6 +6,8 @@
 #include <viscor/surrogate/surrogate_verify.hpp>
 #include <viscor/tables/reference_table.hpp>
 
+#include "required_dependencies.hpp"
+
 #include <cstdlib>
 #include <filesystem>
 #include <optional>

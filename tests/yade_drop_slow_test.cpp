@@ -14,7 +14,7 @@ using namespace viscor::test::yade_drop;
 
 TEST(YadeDropSweep, MindlinReproducesTarget) {
   const auto yade = find_yade();
-  if (!yade) GTEST_SKIP() << "yade is not installed (tools/install-deps.sh installs it)";
+  if (!yade) VISCOR_SKIP_OR_FAIL_MISSING("yade is not installed (tools/install-deps.sh installs it)");
   std::vector<drop_case> cases;
   for (const auto& m : dem_drop::drop_materials())
     for (double v0 : {0.01, 1.0})
@@ -34,7 +34,7 @@ TEST(YadeDropSweep, MindlinReproducesTarget) {
 // pressed together by 1e-4 N each (setPermF), at dt = T/400 and T/800.
 TEST(YadeDropSweep, PairReproducesTarget) {
   const auto yade = find_yade();
-  if (!yade) GTEST_SKIP() << "yade is not installed (tools/install-deps.sh installs it)";
+  if (!yade) VISCOR_SKIP_OR_FAIL_MISSING("yade is not installed (tools/install-deps.sh installs it)");
   std::vector<drop_case> cases;
   for (const auto& m : dem_drop::drop_materials())
     for (double force : {0.0, 1e-4})
@@ -48,7 +48,7 @@ TEST(YadeDropSweep, PairReproducesTarget) {
 // Writing the measured e as `en` (YADE's own conversion): YADE gives viscor's builtin_e.
 TEST(YadeDropSweep, BuiltinConversion) {
   const auto yade = find_yade();
-  if (!yade) GTEST_SKIP() << "yade is not installed (tools/install-deps.sh installs it)";
+  if (!yade) VISCOR_SKIP_OR_FAIL_MISSING("yade is not installed (tools/install-deps.sh installs it)");
   const dem_model& model = find_dem_model("yade", "mindlin");
   std::vector<drop_case> cases;
   for (const auto& m : dem_drop::drop_materials())
@@ -74,7 +74,7 @@ TEST(YadeDropSweep, BuiltinConversion) {
 // pressed together by 1e-4 N each, at dt = T/400 and T/800: first-order misses as on the wall.
 TEST(YadeDropSweep, ViscoelasticPairReproducesTarget) {
   const auto yade = find_yade();
-  if (!yade) GTEST_SKIP() << "yade is not installed (tools/install-deps.sh installs it)";
+  if (!yade) VISCOR_SKIP_OR_FAIL_MISSING("yade is not installed (tools/install-deps.sh installs it)");
   std::vector<drop_case> cases;
   for (const auto& m : viscel_materials())
     for (double force : {0.0, 1e-4})

@@ -18,7 +18,7 @@ using namespace viscor::test::yade_drop;
 
 TEST(YadeDrop, MindlinReproducesTarget) {
   const auto yade = find_yade();
-  if (!yade) GTEST_SKIP() << "yade is not installed (tools/install-deps.sh installs it)";
+  if (!yade) VISCOR_SKIP_OR_FAIL_MISSING("yade is not installed (tools/install-deps.sh installs it)");
   const auto& steel = dem_drop::drop_materials()[0];
   const auto& polymer = dem_drop::drop_materials()[1];
   std::vector<drop_case> cases{deck_drop(polymer, 0.01, 9.81, 400), deck_drop(polymer, 0.01, 9.81, 800),
@@ -55,7 +55,7 @@ double table_builtin_e(const std::string& material, const std::string& gravity, 
 // that builtin_e within its stepping error (two rows where the load matters).
 TEST(YadeDrop, BuiltinConversionTableRows) {
   const auto yade = find_yade();
-  if (!yade) GTEST_SKIP() << "yade is not installed (tools/install-deps.sh installs it)";
+  if (!yade) VISCOR_SKIP_OR_FAIL_MISSING("yade is not installed (tools/install-deps.sh installs it)");
   struct row { int material; const char *v0, *target; };
   // the load lowers e (polymer, 0.01 m/s); Thornton's fit misses near e = 1 (steel, 0.99 gives 0.979)
   const row rows[] = {{1, "0.01", "0.5"}, {0, "1", "0.99"}};
@@ -87,7 +87,7 @@ namespace {
 // builtin_e viscor predicts for it. One yade run.
 TEST(YadeDrop, ViscoelasticReproducesTarget) {
   const auto yade = find_yade();
-  if (!yade) GTEST_SKIP() << "yade is not installed (tools/install-deps.sh installs it)";
+  if (!yade) VISCOR_SKIP_OR_FAIL_MISSING("yade is not installed (tools/install-deps.sh installs it)");
   std::vector<drop_case> cases;
   for (const auto& m : viscel_materials())
     for (double v0 : {0.01, 1.0})

@@ -12,7 +12,8 @@ import tempfile
 import unittest
 
 import viscor
-from viscor_test_support import CLI, REFERENCE_DATA, SOURCE_DIR, linear_law_e, mpmath, numpy as np, reference_rows
+from viscor_test_support import (CLI, REFERENCE_DATA, SOURCE_DIR, linear_law_e, mpmath, numpy as np, reference_rows,
+                                 skip_or_fail)
 
 
 def cli_json(*args):
@@ -130,7 +131,7 @@ class Surrogate(unittest.TestCase):
         law = "kuwabara_kono"
         s = viscor.find_surrogate(law)
         if s is None:
-            self.skipTest("no committed surrogate (reference_data/surrogates/) yet")
+            skip_or_fail(self, "no committed surrogate of " + law + " (reference_data/surrogates/)")
         bound = s.error_bound
         rows = [r for r in reference_rows() if r["law"] == law and r["outcome"] == "rebound"][::50]
         checked = 0

@@ -10,7 +10,7 @@ import threading
 import unittest
 
 import viscor
-from viscor_test_support import numpy as np, reference_rows, write_synthetic_surrogate
+from viscor_test_support import numpy as np, reference_rows, skip_or_fail, write_synthetic_surrogate
 
 
 def linear_e_at_zero_load(gamma):
@@ -146,6 +146,29 @@ class SurrogatePlumbing(unittest.TestCase):
                     f.write("viscor-cor-surrogate 1\nlaw linear 1 1\ndomain x\n")
                 viscor.Surrogate(os.path.join(tmp, "bad.surrogate"))
 
+    def test_unverified_or_damaged_is_refused(self):
+        gamma, g, tol = np.array([0.1, 0.3]), np.array([0.0, 0.5]), np.array([1e-2, 1e-2])
+        with tempfile.TemporaryDirectory() as tmp:
+            verified = write_synthetic_surrogate(os.path.join(tmp, "verified.surrogate"))
+            used = viscor.evaluate("linear", gamma, g, tol, surrogate=verified)
+            self.assertEqual([viscor.EVALUATION_METHODS[m] for m in used.method], ["surrogate", "surrogate"])
+            # The same file without a verification (safety factor 0) claims no bound: never used.
+            unverified = write_synthetic_surrogate(os.path.join(tmp, "unverified.surrogate"), safety_factor=0)
+            r = viscor.evaluate("linear", gamma, g, tol, surrogate=unverified)
+            self.assertNotIn("surrogate", [viscor.EVALUATION_METHODS[m] for m in r.method])
+            self.assertTrue(np.all(r.empirical_bound <= tol))
+            # solved instead: the true e, not the synthetic sqrt(1 - G gamma)
+            self.assertLessEqual(abs(r.e[0] - linear_e_at_zero_load(np.array([0.1]))[0]), r.empirical_bound[0] + 4e-16)
+            self.assertGreater(abs(r.e[0] - np.sqrt(1 - 0.5 * 0.1)), 1e-3)
+            # A damaged (truncated) file is refused with a parse error, not read in part.
+            with open(verified) as f:
+                text = f.read()
+            damaged = os.path.join(tmp, "damaged.surrogate")
+            with open(damaged, "w") as f:
+                f.write(text[:len(text) // 2])
+            with self.assertRaises(viscor.ParseError):
+                viscor.evaluate("linear", gamma, g, tol, surrogate=damaged)
+
     def test_true_needs_a_committed_file(self):
         # A law given by its exponents has no committed surrogate.
         with self.assertRaises(viscor.InvalidParameter):
@@ -157,7 +180,7 @@ class SurrogatePlumbing(unittest.TestCase):
         law = "kuwabara_kono"
         s = viscor.find_surrogate(law)
         if s is None:
-            self.skipTest("no committed surrogate of " + law)
+            skip_or_fail(self, "no committed surrogate of " + law)
         gamma, g = np.array([0.05, 0.3]), np.array([1.0, -0.2])
         r = viscor.evaluate(law, gamma, g, 1e-10)
         self.assertEqual([viscor.EVALUATION_METHODS[m] for m in r.method], ["surrogate", "surrogate"])

@@ -6,12 +6,9 @@ import sys
 import tempfile
 import unittest
 
-from viscor_test_support import SOURCE_DIR, numpy
+from viscor_test_support import SOURCE_DIR, numpy, optional_module
 
-try:
-    import matplotlib
-except ImportError:
-    matplotlib = None
+matplotlib = optional_module("matplotlib", "python3-matplotlib")
 
 
 @unittest.skipIf(numpy is None or matplotlib is None, "needs NumPy and matplotlib")
