@@ -6,6 +6,7 @@
 // A program missing from PATH is skipped with a message (tools/install-deps.sh
 // installs them).
 #include "dem_drop_utils.hpp"
+#include "required_dependencies.hpp"
 #include "test_utils.hpp"
 
 #include <gtest/gtest.h>
@@ -62,7 +63,7 @@ void expect_deck_rebounds_at_target(const std::string& program_name, const std::
   SCOPED_TRACE(model_args);
   if (std::string(VISCOR_CLI_PATH).empty()) GTEST_SKIP() << "viscor CLI not built";
   const auto program = dem_drop::find_program(program_name);
-  if (!program) GTEST_SKIP() << program_name << " is not installed (tools/install-deps.sh installs it)";
+  if (!program) VISCOR_SKIP_OR_FAIL_MISSING(program_name << " is not installed (tools/install-deps.sh installs it)");
   scratch_dir dir;
   ASSERT_FALSE(dir.path.empty());
   const std::string deck_name = program_name == "yade" ? "drop.py" : "drop.in";
@@ -103,7 +104,7 @@ nlohmann::json dem_json(const std::string& model_args) {
 TEST(DemDropDeck, LiggghtsSnippetRunsInMinimalDeck) {
   if (std::string(VISCOR_CLI_PATH).empty()) GTEST_SKIP() << "viscor CLI not built";
   const auto program = dem_drop::find_program("liggghts");
-  if (!program) GTEST_SKIP() << "liggghts is not installed (tools/install-deps.sh installs it)";
+  if (!program) VISCOR_SKIP_OR_FAIL_MISSING("liggghts is not installed (tools/install-deps.sh installs it)");
   const auto j = dem_json("liggghts --damping hertz");
   const double dt = std::stod(j["time_step_s"].get<std::string>());
   const std::string snippet = j["snippet"];
@@ -136,7 +137,7 @@ TEST(DemDropDeck, LiggghtsSnippetRunsInMinimalDeck) {
 TEST(DemDropDeck, LammpsSnippetBeadBeadEntriesFitTwoBeads) {
   if (std::string(VISCOR_CLI_PATH).empty()) GTEST_SKIP() << "viscor CLI not built";
   const auto program = dem_drop::find_program("lmp");
-  if (!program) GTEST_SKIP() << "lmp is not installed (tools/install-deps.sh installs it)";
+  if (!program) VISCOR_SKIP_OR_FAIL_MISSING("lmp is not installed (tools/install-deps.sh installs it)");
   const auto j = dem_json("lammps --damping tsuji");
   ASSERT_TRUE(j["deck"].contains("bead_bead_damping")) << j.dump(2);
   const std::string E = j["deck"]["bead_bead_youngs_modulus"], damp = j["deck"]["bead_bead_damping"];
@@ -169,7 +170,7 @@ namespace {
 TEST(DemDropDeck, YadeSnippetRunsAsPasted) {
   if (std::string(VISCOR_CLI_PATH).empty()) GTEST_SKIP() << "viscor CLI not built";
   const auto program = dem_drop::find_program("yade");
-  if (!program) GTEST_SKIP() << "yade is not installed (tools/install-deps.sh installs it)";
+  if (!program) VISCOR_SKIP_OR_FAIL_MISSING("yade is not installed (tools/install-deps.sh installs it)");
   const auto j = dem_json("yade --damping mindlin");
   const double contact = std::stod(j["contact_time_s"].get<std::string>());
   const std::string script = "import sys\n" + j["snippet"].get<std::string>() +
