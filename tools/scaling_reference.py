@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Reference values of the scaling of eq. (2), computed outside the library.
 
-The physical model (docs/dem.md, ../paper ERRATA "Scaling"): a bead of mass m on a
+The physical model (docs/dem.md; docs/report-notes.md on the report's scaling): a bead of mass m on a
 wall, overlap x(t) >= 0, force F_c = k x^alpha + gamma0 k d/dt(x^beta), gravity and a
 constant force F pressing it on the wall:
 
