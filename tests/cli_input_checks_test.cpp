@@ -107,6 +107,10 @@ TEST_F(CliInputChecks, OutputOntoAFifoASymlinkOrADirectoryIsRefusedAndLeftAlone)
   }
   const std::string spec = write("spec.json", R"({"laws": ["linear"], "gamma": [0.1], "g": [0], "digits": 15})");
   expect_refused("table " + spec + " -o " + fifo, {fifo, "FIFO"});
+  expect_refused("report -o " + fifo, {fifo, "FIFO"});
+  expect_refused("errormap --model linear --reference-digits 30 --gamma-edges 0,1 --g-edges 0,1 -o " + fifo, {fifo, "FIFO"});
+  // Checked when the options are read, before any work: the target is named, not the bad gamma.
+  expect_refused("cor --model linear --gamma -1 -o " + fifo, {fifo, "FIFO"});
   struct stat st {};
   ASSERT_EQ(::lstat(fifo.c_str(), &st), 0);
   EXPECT_TRUE(S_ISFIFO(st.st_mode)) << "the FIFO was replaced";

@@ -71,7 +71,8 @@ struct output_options {
 
   void add_to(CLI::App& app) {
     app.add_flag("--json", json, "print one JSON object instead of the readable summary");
-    app.add_option("-o,--output", path, "write the output to FILE instead of standard output");
+    app.add_option("-o,--output", path, "write the output to FILE instead of standard output")
+        ->check(regular_output_file());
   }
 
   /// JSON when asked with --json or when the output file ends in .json.
@@ -113,6 +114,21 @@ struct output_options {
       ::unlink(temporary.c_str());
       throw error("cannot move output into '" + path + "': " + std::strerror(e));
     }
+  }
+
+  /// A CLI11 check of an output option: refuses, before any work, a path that
+  /// exists and is not a regular file (write_atomically checks again when writing).
+  static CLI::Validator regular_output_file() {
+    return CLI::Validator(
+        [](std::string& value) {
+          try {
+            refuse_unless_regular_or_absent(value);
+          } catch (const error& e) {
+            return std::string(e.what());
+          }
+          return std::string();
+        },
+        "FILE", "REGULAR_OUTPUT_FILE");
   }
 
   /// Throws invalid_parameter naming `path` when it exists and is not a regular file

@@ -124,7 +124,8 @@ void setup(CLI::App& app) {
       ->capture_default_str();
   app.add_option("--floor", cmd->floor, "added to every bound (rounding in double)")->capture_default_str();
   app.add_option("--min-samples", cmd->min_samples, "reference points a cell needs")->capture_default_str();
-  app.add_option("-o,--output", cmd->output, "the map file to write");
+  app.add_option("-o,--output", cmd->output, "the map file to write")
+      ->check(output_options::regular_output_file());
   app.callback([cmd] { cmd->run(); });
 }
 
