@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -170,6 +171,55 @@ TEST(ProveCli, BadInputExits2WithoutOutput) {
     EXPECT_EQ(r.status, 2) << args << ": " << r.err;
     EXPECT_FALSE(r.err.empty()) << args;
     EXPECT_FALSE(std::ifstream(out).good()) << args << ": an output file was written";
+  }
+}
+
+// Q alpha = 4 x 4611686018427387905 wraps around 64 bits into alpha = 1: the proof
+// would have integrated another equation. Refused, naming the exponent.
+TEST(ProveCli, ExponentOverflowIsRefusedNamingTheExponent) {
+  const auto r = viscor::test::run_cli("prove --alpha 4611686018427387905 --beta 5/4 --gamma 0.05 --g 0 --digits 20");
+  EXPECT_EQ(r.status, 2) << r.err << r.out;
+  EXPECT_NE(r.err.find("alpha"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("4611686018427387905"), std::string::npos) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
+}
+
+// prove reads numbers as cor does: what cor refuses, prove refuses; a ball is not
+// an exact decimal.
+TEST(ProveCli, NumbersAreReadAsEveryOtherSubcommandReadsThem) {
+  for (const std::string g : {"--g=--1", "--g=+-1", "--g=-+1", "--g=' 0.5'", "--g='0.5 '", "--g=inf", "--g=0x10"}) {
+    const auto prove = viscor::test::run_cli("prove --model tsuji --gamma 0.1 " + g);
+    EXPECT_EQ(prove.status, 2) << g << ": " << prove.err << prove.out;
+    EXPECT_NE(prove.err.find("parameter g"), std::string::npos) << g << ": " << prove.err;
+    const auto cor = viscor::test::run_cli("cor --model tsuji --gamma 0.1 " + g);
+    EXPECT_EQ(cor.status, 2) << g << ": " << cor.err;
+  }
+  const auto ball = viscor::test::run_cli("prove --model tsuji --gamma '[0.05 +/- 1e-25]' --g 0");
+  EXPECT_EQ(ball.status, 2) << ball.err << ball.out;
+  EXPECT_NE(ball.err.find("exact decimal"), std::string::npos) << ball.err;
+  EXPECT_NE(ball.err.find("[0.05 +/- 1e-25]"), std::string::npos) << ball.err;
+}
+
+// The fields that read as values hold proven digits only: e is the exact value
+// correctly rounded to its proven digits; the ball's midpoint is e_midpoint.
+TEST(ProveCli, JsonValuesHoldOnlyProvenDigits) {
+  const json j = prove("--model tsuji --gamma 0.3 --g 0 --digits 30");
+  ASSERT_EQ(j.value("outcome", ""), "rebound") << j.dump(2);
+  for (const std::string name : {"e", "one_minus_e", "contact_time"}) {
+    const std::string value = j[name], digits_field = name == "e" ? "proven_digits" : "proven_digits_" + name;
+    const int proven = j[digits_field];
+    const std::string mantissa = value.substr(0, value.find_first_of("eE"));
+    const auto significant = mantissa.find_first_not_of("0.") == std::string::npos
+                                 ? 0
+                                 : std::count_if(mantissa.begin() + static_cast<long>(mantissa.find_first_not_of("0.")),
+                                                 mantissa.end(), [](char c) { return c >= '0' && c <= '9'; });
+    EXPECT_LE(significant, proven) << name << " = " << value << ", proven digits " << proven;
+    EXPECT_GE(proven, 20) << j.dump(2);
+    EXPECT_TRUE(j.contains(name + "_midpoint")) << j.dump(2);
+    scoped_precision precision(60);
+    const mpfr_real x(value), lower(j[name + "_lower"].get<std::string>()), upper(j[name + "_upper"].get<std::string>());
+    const mpfr_real unit = pow(mpfr_real(10), -(proven - 1)) * abs(x);
+    EXPECT_TRUE(lower - unit <= x && x <= upper + unit) << name << ": " << value;
   }
 }
 

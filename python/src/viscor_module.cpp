@@ -209,6 +209,7 @@ std::string run(const std::vector<std::string>& args) {
   std::ostringstream captured;
   std::streambuf* const saved = std::cout.rdbuf(captured.rdbuf());
   try {
+    cli::refuse_empty_assignments(static_cast<int>(argv.size()), argv.data());
     app.parse(static_cast<int>(argv.size()), argv.data());
   } catch (const CLI::ParseError& e) {
     std::cout.rdbuf(saved);

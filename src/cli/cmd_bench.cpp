@@ -305,6 +305,8 @@ struct bench_command {
       for (std::string item; std::getline(in, item, ',');) law_list.push_back(law_by_name(item));
     }
     std::map<std::string, std::shared_ptr<error_map>> loaded;
+    if (!maps.empty() && !std::filesystem::is_directory(maps))
+      throw invalid_parameter("--error-maps '" + maps + "' is not a directory");
     if (!maps.empty())
       for (const auto& law : law_list) {
         const auto path = std::filesystem::path(maps) / (law.name + ".csv");

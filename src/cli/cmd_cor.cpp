@@ -161,7 +161,8 @@ struct cor_command {
         certify || prove || output.json || !output.path.empty())
       throw invalid_parameter("--points reads the law, gamma, g and digits of every point from its file; give only "
                               "--points, --threads, --method, --tolerance and --max-steps with it");
-    if (threads < 1) throw invalid_parameter("--threads must be >= 1, got " + std::to_string(threads));
+    if (threads < 1 || threads > 4096)
+      throw invalid_parameter("--threads must be from 1 to 4096, got " + std::to_string(threads));
     point_options o;
     o.method = parse_method(method);
     o.tolerance = tolerance;

@@ -20,13 +20,19 @@
 namespace viscor::cli::cmd_dem {  // named: the subcommands share translation units (unity build)
 namespace {
 
-std::vector<std::string> split_list(const std::string& text) {
+/// The comma-separated items of option `name`'s value; an empty item ("0.1,,1", a
+/// leading or trailing comma) is refused, naming the option and its value.
+std::vector<std::string> split_list(const std::string& text, const std::string& name) {
   std::vector<std::string> items;
-  std::string item;
-  std::istringstream in(text);
-  while (std::getline(in, item, ','))
-    if (!item.empty()) items.push_back(item);
-  return items;
+  std::size_t start = 0;
+  for (;;) {
+    const std::size_t comma = text.find(',', start);
+    items.push_back(text.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+    if (items.back().empty())
+      throw invalid_parameter(name + " has an empty entry in '" + text + "' (a number between every two commas)");
+    if (comma == std::string::npos) return items;
+    start = comma + 1;
+  }
 }
 
 struct dem_command {
@@ -343,7 +349,7 @@ struct dem_command {
       deck_value = parse_real<Real>(deck_damping, "deck_damping");
     }
     dem::validate_deck_damping(model, deck_value);
-    std::vector<std::string> speed_list = split_list(speeds);
+    std::vector<std::string> speed_list = split_list(speeds, "--speeds");
     if (!v0.empty()) speed_list.insert(speed_list.begin(), v0);
     if (speed_list.empty()) throw invalid_parameter("--speeds lists no speed (got '" + speeds + "')");
     struct load { std::string gravity, force; };

@@ -31,12 +31,24 @@ struct errormap_command {
   int reference_digits = 0, per_interval = 2, min_samples = 4;
   double safety_factor = 4, floor = 1e-14;
 
+  /// The integer options within what their help text promises.
+  void refuse_out_of_range() const {
+    if (reference_digits != 0 && (reference_digits < 30 || reference_digits > max_working_digits))
+      throw invalid_parameter("--reference-digits must be from 30 to " + std::to_string(max_working_digits) +
+                              ", got " + std::to_string(reference_digits));
+    if (per_interval < 1)
+      throw invalid_parameter("--per-interval must be >= 1, got " + std::to_string(per_interval));
+    if (min_samples < 1)
+      throw invalid_parameter("--min-samples must be >= 1, got " + std::to_string(min_samples));
+  }
+
   void run() const {
     const contact_law model = law.resolve();
     if (output.empty()) throw invalid_parameter("errormap needs -o FILE (e.g. reference_data/error_maps/" +
                                                 (model.name.empty() ? std::string("LAW") : model.name) + ".csv)");
     if (tables.empty() == (reference_digits == 0))
       throw invalid_parameter("errormap needs either --table FILE... (certified tables) or --reference-digits N");
+    refuse_out_of_range();
     error_map_spec spec;
     spec.gamma_edges = split_list(gamma_edges, "gamma-edges");
     spec.g_edges = split_list(g_edges, "g-edges");
@@ -112,7 +124,8 @@ void setup(CLI::App& app) {
       ->capture_default_str();
   app.add_option("--floor", cmd->floor, "added to every bound (rounding in double)")->capture_default_str();
   app.add_option("--min-samples", cmd->min_samples, "reference points a cell needs")->capture_default_str();
-  app.add_option("-o,--output", cmd->output, "the map file to write");
+  app.add_option("-o,--output", cmd->output, "the map file to write")
+      ->check(output_options::regular_output_file());
   app.callback([cmd] { cmd->run(); });
 }
 

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <sstream>
+#include <tuple>
 
 namespace viscor::cli::cmd_prove {  // named: the subcommands share translation units (unity build)
 namespace {
@@ -35,14 +36,19 @@ struct prove_command {
     j["outcome"] = std::string(to_string(p.outcome));
     j["steps"] = p.steps;
     if (p.outcome == proven_outcome::rebound) {
-      // Each ball as Arb prints it, with its relative digits + 2 (the printout's own
-      // rounding is added to the printed radius, so fewer digits would hide proven ones).
+      // The value fields hold only proven digits: the exact value correctly rounded
+      // to its proven digits (null when none are proven). The ball's midpoint, with
+      // more digits than are proven, is named as such (NAME_midpoint); the ball as
+      // Arb prints it, with its relative digits + 2 (the printout's own rounding is
+      // added to the printed radius, so fewer digits would hide proven ones).
       auto shown = [](const ball& x) { return std::max(10, proven_impact::relative_digits(x) + 2); };
       json enclosure;
-      for (const auto& [name, value] : {std::pair<const char*, const ball*>{"e", &p.e},
-                                        {"one_minus_e", &p.one_minus_e},
-                                        {"contact_time", &p.contact_time}}) {
-        j[name] = value->mid_str(shown(*value));
+      for (const auto& [name, value, bounds] :
+           {std::tuple<const char*, const ball*, const proven_bounds*>{"e", &p.e, &proof.e},
+            {"one_minus_e", &p.one_minus_e, &proof.one_minus_e},
+            {"contact_time", &p.contact_time, proof.contact_time ? &*proof.contact_time : nullptr}}) {
+        j[name] = bounds && bounds->digits > 0 ? json(bounds->rounded) : json(nullptr);
+        j[std::string(name) + "_midpoint"] = value->mid_str(shown(*value));
         enclosure[name] = value->str(shown(*value));
       }
       j["enclosure"] = enclosure;

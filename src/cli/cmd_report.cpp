@@ -328,7 +328,8 @@ void setup(CLI::App& app) {
   app.add_option("--data", report->data,
                  "directory of the certified tables (default: $VISCOR_DATA, else the installed share/viscor, else the "
                  "source tree's reference_data)");
-  app.add_option("-o,--output", report->output, "write to FILE (CSV if it ends in .csv, else Markdown)");
+  app.add_option("-o,--output", report->output, "write to FILE (CSV if it ends in .csv, else Markdown)")
+      ->check(output_options::regular_output_file());
   app.add_flag("--csv", report->csv, "CSV instead of Markdown");
   app.add_flag("--compare", report->compare, "print the report's values next to ours");
   app.add_option("--values", report->values,

@@ -45,7 +45,7 @@ struct surrogate_spec {
 surrogate_spec read_surrogate_spec(const std::string& path) {
   json j;
   try {
-    j = json::parse(detail::read_file(path));
+    j = parse_json_text(detail::read_file(path), path);
   } catch (const json::exception& e) {
     throw parse_error(path + ": not valid JSON: " + e.what());
   }

@@ -93,7 +93,8 @@ struct run_options {
 
   void add_to(CLI::App& app) {
     app.add_option("spec", spec_path, "grid specification, JSON (docs/tables.md, section 'Grid specification')");
-    app.add_option("-o,--output", output, "output table OUT.csv (its sidecar is OUT.csv.json)");
+    app.add_option("-o,--output", output, "output table OUT.csv (its sidecar is OUT.csv.json)")
+      ->check(output_options::regular_output_file());
     app.add_flag("--resume", resume, "continue an interrupted run from OUT.csv.partial");
     app.add_option("--shard", shard_text, "compute only shard i of N (0 <= i < N): rows with index % N == i");
     app.add_option("--threads", threads, "worker threads (default: all cores)")->capture_default_str();

@@ -3,6 +3,8 @@
 // where setup(CLI::App&) adds options and a callback. main.cpp only walks the list.
 #pragma once
 
+#include <viscor/core/exceptions.hpp>
+
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
@@ -47,6 +49,19 @@ inline void add_commands(CLI::App& app) {
     for (CLI::App* sub : a.get_subcommands([](CLI::App*) { return true; })) self(self, *sub);
   };
   refuse_empty(refuse_empty, app);
+}
+
+/// Throws invalid_parameter for an argument "--name=" with nothing after the '='
+/// (CLI11 would take the next argument as the value: `--gamma= --g 0` read gamma
+/// as "--g"). Used by main.cpp and the Python module before parsing.
+inline void refuse_empty_assignments(int argc, const char* const* argv) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--") return;
+    if (arg.size() > 3 && arg.rfind("--", 0) == 0 && arg.back() == '=' && arg.find('=') == arg.size() - 1)
+      throw invalid_parameter("option " + arg.substr(0, arg.size() - 1) +
+                              " has an empty value (give a value after '=' or leave the option out)");
+  }
 }
 
 }  // namespace viscor::cli

@@ -11,8 +11,10 @@
 
 #include <viscor/impact/solve_impact.hpp>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cstdio>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -193,7 +195,7 @@ inline std::size_t solve_points(const std::string& path, const point_options& o,
       for (auto& t : pool) t.join();
     }
     for (std::size_t i = 0; i < batch.size(); ++i) {
-      out << results[i].dump() << '\n';
+      out << results[i].dump(-1, ' ', false, json::error_handler_t::replace) << '\n';
       if (refused[i]) {
         ++refused_count;
         std::cerr << "viscor: error: " << name << ":" << batch[i].line << ": " << results[i]["error"].get<std::string>()
@@ -209,6 +211,12 @@ inline std::size_t solve_points(const std::string& path, const point_options& o,
   const std::size_t batch_size = o.threads <= 1 ? 1 : 4 * o.threads;
   while (std::getline(in, line)) {
     ++line_number;
+    if (const std::size_t bad = first_invalid_utf8(line); bad != std::string::npos) {
+      char hex[8];
+      std::snprintf(hex, sizeof hex, "0x%02X", static_cast<unsigned>(static_cast<unsigned char>(line[bad])));
+      throw invalid_parameter("--points: " + name + ":" + std::to_string(line_number) + ": not UTF-8 text (byte " +
+                              hex + " at column " + std::to_string(bad + 1) + ")");
+    }
     if (line.find_first_not_of(" \t\r") == std::string::npos || line[line.find_first_not_of(" \t")] == '#') continue;
     if (!decided) {
       decided = true;
@@ -216,10 +224,15 @@ inline std::size_t solve_points(const std::string& path, const point_options& o,
       if (csv) {
         header = detail::split_csv(line);
         point_text probe;
-        for (const auto& column : header)
+        for (std::size_t c = 0; c < header.size(); ++c) {
+          const std::string& column = header[c];
           if (!detail::point_field(probe, column))
             throw invalid_parameter("--points: " + name + ":" + std::to_string(line_number) + ": unknown column '" +
                                     column + "' (known: " + detail::point_fields + ")");
+          if (std::find(header.begin(), header.begin() + static_cast<long>(c), column) != header.begin() + static_cast<long>(c))
+            throw invalid_parameter("--points: " + name + ":" + std::to_string(line_number) + ": column '" + column +
+                                    "' given twice");
+        }
         continue;
       }
     }

@@ -1,12 +1,25 @@
 // viscor command-line tool: one subcommand per src/cli/cmd_*.cpp.
 // Exit codes: 0 success, 2 usage or input error (the message names the option or
-// value), 3 internal error.
+// value) or a failed write (an output file, or standard output), 3 internal error.
 #include "command_registry.hpp"
 
 #include <viscor/config.hpp>
 #include <viscor/core/exceptions.hpp>
 
+#include <cstdio>
 #include <iostream>
+
+namespace {
+
+/// Whether everything written to standard output reached it: a write error (a full
+/// disk, /dev/full, a closed pipe) must not end in exit code 0.
+bool standard_output_written() {
+  std::cout.flush();
+  const bool ok = static_cast<bool>(std::cout) && std::fflush(stdout) == 0 && !std::ferror(stdout);
+  return std::fclose(stdout) == 0 && ok;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"viscor: certified coefficient of restitution of visco-elastic impacts under load"};
@@ -14,7 +27,12 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   viscor::cli::add_commands(app);  // every subcommand; empty values refused
   try {
+    viscor::cli::refuse_empty_assignments(argc, argv);
     app.parse(argc, argv);
+    if (!standard_output_written()) {
+      std::cerr << "viscor: error: writing to standard output failed\n";
+      return 2;
+    }
   } catch (const CLI::ParseError& e) {
     // --help and --version are "errors" with exit code 0; every other parse error
     // is a usage error: exit 2, like every bad value found later.

@@ -100,6 +100,7 @@ class spec_builder : public nlohmann::json_sax<nlohmann::json> {
   bool string(string_t& v) override { return scalar(spec_node::type::string, v); }
   bool binary(binary_t&) override { return scalar(spec_node::type::null, ""); }
   bool start_object(std::size_t) override {
+    refuse_deeper_nesting();
     m_stack.push_back(&place(spec_node::type::object));
     return true;
   }
@@ -119,6 +120,7 @@ class spec_builder : public nlohmann::json_sax<nlohmann::json> {
     return true;
   }
   bool start_array(std::size_t) override {
+    refuse_deeper_nesting();
     m_stack.push_back(&place(spec_node::type::array));
     return true;
   }
@@ -139,12 +141,22 @@ class spec_builder : public nlohmann::json_sax<nlohmann::json> {
     place(t).text = text;
     return true;
   }
+  void refuse_deeper_nesting() const {
+    if (m_stack.size() >= max_json_depth)
+      throw viscor::parse_error(m_file + ":" + std::to_string(current_line()) + ": JSON nested deeper than " +
+                                std::to_string(max_json_depth) + " levels");
+  }
   // Line of the last non-blank character the parser has read (a number's
   // look-ahead character is a blank, ',', ']' or '}' on the number's line).
+  // Counted on from the previous call (that end never moves back), so reading a
+  // file costs time in proportion to its length, not its square.
   std::size_t current_line() const {
     std::size_t end = static_cast<std::size_t>(*m_furthest - m_text.data());
-    while (end > 0 && std::isspace(static_cast<unsigned char>(m_text[end - 1]))) --end;
-    return 1 + static_cast<std::size_t>(std::count(m_text.begin(), m_text.begin() + static_cast<long>(end), '\n'));
+    while (end > m_counted_to && std::isspace(static_cast<unsigned char>(m_text[end - 1]))) --end;
+    m_lines_before += static_cast<std::size_t>(
+        std::count(m_text.begin() + static_cast<long>(m_counted_to), m_text.begin() + static_cast<long>(end), '\n'));
+    m_counted_to = end;
+    return 1 + m_lines_before;
   }
   spec_node& place(spec_node::type t) {
     spec_node* n;
@@ -169,6 +181,7 @@ class spec_builder : public nlohmann::json_sax<nlohmann::json> {
   std::vector<spec_node*> m_stack;  // NOTE: only the innermost open container grows, so these stay valid
   std::string m_key;
   std::size_t m_key_line = 0;
+  mutable std::size_t m_counted_to = 0, m_lines_before = 0;  // current_line's count so far
 };
 
 /// Field access shared by the readers of JSON files (specs, scenes): every error

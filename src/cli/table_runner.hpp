@@ -148,13 +148,7 @@ inline std::string read_file(const std::string& path) {
   return s.str();
 }
 
-inline json read_json_file(const std::string& path) {
-  try {
-    return json::parse(read_file(path));
-  } catch (const json::exception& e) {
-    throw parse_error(path + ": invalid JSON: " + e.what());
-  }
-}
+inline json read_json_file(const std::string& path) { return parse_json_text(read_file(path), path); }
 
 inline std::string duration_text(double seconds) {
   if (!(seconds >= 0) || seconds > 1e9) return "--:--";
@@ -254,6 +248,9 @@ inline void run_table_job(const table_job& job) {
   const std::set<std::int64_t> wanted(job.indices.begin(), job.indices.end());
   const json fingerprint = table_fingerprint(job.provenance);
   const table_format format{job.kind, job.proven};
+  // Before any work: every file this run writes must be a regular file or absent.
+  for (const std::string& path : {job.output, job.output + ".json", partial, partial_meta})
+    output_options::refuse_unless_regular_or_absent(path);
 
   // Rows already done by an interrupted run.
   std::set<std::int64_t> done;

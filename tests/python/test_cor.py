@@ -125,6 +125,13 @@ class ResultObject(unittest.TestCase):
         self.assertEqual(r.decimal("e"), 0)
         self.assertIn("stop_overlap", r)
 
+    def test_a_rebound_the_energy_rules_out_is_undecided(self):
+        # Hunt-Crossley, gamma 1e-30, g 1e12 in double: the Taylor solver returned
+        # e = 288 (a stick at 20 digits and more); e > 1 cannot be, so: undecided.
+        r = viscor.cor("hunt_crossley", "1e-30", "1e12")
+        self.assertNotEqual(r.outcome, "rebound")
+        self.assertLessEqual(r.decimal("e"), 1)
+
 
 if __name__ == "__main__":
     unittest.main()

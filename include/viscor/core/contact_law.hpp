@@ -3,6 +3,7 @@
 // denominators to regularise u^(p/q) at u = 0), and the named presets.
 #pragma once
 
+#include <viscor/core/checked_arithmetic.hpp>
 #include <viscor/core/detail/exact_decimal.hpp>
 #include <viscor/core/exceptions.hpp>
 #include <viscor/core/real_io.hpp>
@@ -145,18 +146,45 @@ class exponent {
   std::optional<std::string> m_decimal;
 };
 
+/// For rational exponents alpha = p1/q1, beta = p2/q2: Q = lcm(q1, q2) and the
+/// integers Q alpha, Q beta (u = s^Q turns u^alpha, u^beta into powers of s).
+struct exponent_multiples {
+  std::int64_t Q = 1, Q_alpha = 1, Q_beta = 1;
+};
+
 /// Exponents (alpha, beta) of the contact law; alpha, beta >= 1 (Assumption 1).
 struct contact_law {
   exponent alpha = exponent::rational(3, 2);
   exponent beta = exponent::rational(3, 2);
   std::string name;  ///< preset name, empty for a custom law
 
-  /// Throws invalid_parameter unless alpha >= 1 and beta >= 1.
+  /// Throws invalid_parameter unless alpha >= 1 and beta >= 1 and, for rational
+  /// exponents, Q, Q alpha, Q beta and the sums the solvers form of them
+  /// (Q alpha + Q, 2 Q beta, Q alpha - Q beta + Q) fit in 64-bit integers.
   void validate() const {
     if (!alpha.at_least_one())
       throw invalid_parameter("contact law exponent alpha must be >= 1, got alpha = " + alpha.to_string());
     if (!beta.at_least_one())
       throw invalid_parameter("contact law exponent beta must be >= 1, got beta = " + beta.to_string());
+    if (alpha.is_rational() && beta.is_rational()) {
+      const exponent_multiples m = multiples();
+      const std::string law = "contact law alpha = " + alpha.to_string() + ", beta = " + beta.to_string() + ": ";
+      checked_sum(m.Q_alpha, m.Q, law + "Q (alpha + 1)");
+      checked_product(2, m.Q_beta, law + "2 Q beta");
+      checked_sum(checked_difference(m.Q_alpha, m.Q_beta, law + "Q (alpha - beta)"), m.Q, law + "Q (alpha - beta + 1)");
+    }
+  }
+
+  /// Q, Q alpha and Q beta of rational exponents, checked: an exponent whose
+  /// numerator times Q does not fit in 64 bits is refused (invalid_parameter
+  /// naming the exponent) rather than wrapped around into another law.
+  exponent_multiples multiples() const {
+    const std::string law = "contact law alpha = " + alpha.to_string() + ", beta = " + beta.to_string() + ": ";
+    exponent_multiples m;
+    m.Q = checked_lcm(alpha.denominator(), beta.denominator(), law + "the common denominator Q");
+    m.Q_alpha = checked_product(m.Q / alpha.denominator(), alpha.numerator(), law + "Q alpha");
+    m.Q_beta = checked_product(m.Q / beta.denominator(), beta.numerator(), law + "Q beta");
+    return m;
   }
 
   /// "kuwabara_kono (alpha=3/2, beta=3/2)" or "alpha=1.3, beta=17/10".

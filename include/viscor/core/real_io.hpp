@@ -8,11 +8,13 @@
 #include <boost/math/special_functions/fpclassify.hpp>
 
 #include <cctype>
+#include <cmath>
 #include <cstdlib>
 #include <iomanip>
 #include <ios>
 #include <sstream>
 #include <string>
+#include <type_traits>
 
 namespace viscor {
 
@@ -56,6 +58,25 @@ inline bool looks_like_decimal(const std::string& s) {
   }
   return i == n;
 }
+
+/// Whether a decimal accepted by looks_like_decimal has a nonzero digit before its exponent.
+inline bool has_nonzero_digit(const std::string& s) {
+  for (const char c : s) {
+    if (c == 'e' || c == 'E') return false;
+    if (c >= '1' && c <= '9') return true;
+  }
+  return false;
+}
+
+/// Whether x, parsed from a nonzero decimal, lost it to underflow: rounded to zero,
+/// or (in double and long double) to a subnormal number, which keeps fewer digits
+/// than the working precision promises.
+template <class Real>
+bool underflowed(const Real& x) {
+  if (x == 0) return true;
+  if constexpr (std::is_floating_point_v<Real>) return std::fpclassify(x) == FP_SUBNORMAL;
+  return false;
+}
 }  // namespace detail
 
 /// Parses a finite decimal number, correctly rounded to Real. `name` is the
@@ -75,6 +96,10 @@ Real parse_real(const std::string& text, const std::string& name) {
   using boost::math::isfinite;
   if (!isfinite(x))
     throw invalid_parameter("parameter " + name + " = " + text + " overflows the working precision");
+  if (detail::has_nonzero_digit(text) && detail::underflowed(x))
+    throw invalid_parameter("parameter " + name + " = " + text +
+                            " underflows the working precision (nonzero, but below its smallest normal number; "
+                            "give 0 or ask for more digits)");
   return x;
 }
 

@@ -7,6 +7,7 @@
 // docs/proofs.md says what is proven with it and how.
 #pragma once
 
+#include <viscor/core/real_io.hpp>
 #include <viscor/core/exceptions.hpp>
 
 #include <arb.h>
@@ -58,11 +59,17 @@ class ball {
   /// The smallest ball Arb finds around the decimal number `text` (exact when
   /// the decimal is a dyadic number representable at the current precision).
   /// Throws invalid_parameter naming `text` when it is not a finite decimal.
-  static ball from_decimal(std::string_view text) {
+  static ball from_decimal(std::string_view text, std::string_view name = "number") {
     ball b;
     const std::string s(text);
-    if (s.empty() || arb_set_str(b.m, s.c_str(), ball_bits()) != 0 || !arb_is_finite(b.m))
-      throw invalid_parameter("'" + s + "' is not a finite decimal number");
+    if (s.find('[') != std::string::npos || s.find("+/-") != std::string::npos)
+      throw invalid_parameter("parameter " + std::string(name) + " must be an exact decimal, got the ball '" + s +
+                              "': a proof is for one exact value, not an interval");
+    // The grammar every other input of viscor is read with (one number parser): no
+    // spaces, one sign, no Arb-only forms.
+    if (!viscor::detail::looks_like_decimal(s) || arb_set_str(b.m, s.c_str(), ball_bits()) != 0 || !arb_is_finite(b.m))
+      throw invalid_parameter("parameter " + std::string(name) + " must be a finite decimal number, but got '" + s +
+                              "'");
     return b;
   }
   /// The interval [lo, hi] (lo <= hi).

@@ -238,13 +238,12 @@ inline proven_impact prove_impact(const contact_law& law, std::string_view gamma
   impact_ball_constants k;
   k.alpha = ball(static_cast<long>(law.alpha.numerator())) / ball(static_cast<long>(law.alpha.denominator()));
   k.beta = ball(static_cast<long>(law.beta.numerator())) / ball(static_cast<long>(law.beta.denominator()));
-  k.gamma = ball::from_decimal(gamma_text);
-  k.g = ball::from_decimal(g_text);
+  k.gamma = ball::from_decimal(gamma_text, "gamma");
+  k.g = ball::from_decimal(g_text, "g");
   if (!k.gamma.nonnegative()) throw invalid_parameter("gamma must be >= 0, got " + std::string(gamma_text));
   k.gamma_beta = k.gamma * k.beta;
-  k.Q = std::lcm(static_cast<long>(law.alpha.denominator()), static_cast<long>(law.beta.denominator()));
-  k.Q_alpha = k.Q / law.alpha.denominator() * law.alpha.numerator();
-  k.Q_beta = k.Q / law.beta.denominator() * law.beta.numerator();
+  const exponent_multiples multiples = law.multiples();  // checked: validate() refused any overflow
+  k.Q = multiples.Q, k.Q_alpha = multiples.Q_alpha, k.Q_beta = multiples.Q_beta;
   k.beta_is_one = law.beta.numerator() == law.beta.denominator();
   // alpha - (beta - 1) = (Q alpha - Q beta + Q) / Q.
   if (const long shift = k.Q_alpha - k.Q_beta + k.Q; !k.beta_is_one && (shift == 0 || shift == k.Q))

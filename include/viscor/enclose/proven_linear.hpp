@@ -70,7 +70,7 @@ inline proven_impact prove_linear_impact(std::string_view gamma_text, std::strin
                                          const proof_options& options = {}) {
   if (digits < 5 || digits > 100000) throw invalid_parameter("digits must be in [5, 100000], got " + std::to_string(digits));
   scoped_ball_bits bits(working_bits(digits));
-  linear_contact_system system{ball::from_decimal(gamma_text), ball::from_decimal(g_text)};
+  linear_contact_system system{ball::from_decimal(gamma_text, "gamma"), ball::from_decimal(g_text, "g")};
   if (system.gamma.negative() || !system.gamma.nonnegative())
     throw invalid_parameter("gamma must be >= 0, got " + std::string(gamma_text));
   const ball& gamma = system.gamma;

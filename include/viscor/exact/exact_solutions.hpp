@@ -28,7 +28,7 @@ inline bool is_alpha_plus_one(const contact_law& law) {
   const auto& a = law.alpha;
   const auto& b = law.beta;
   return a.is_rational() && b.is_rational() && b.denominator() == a.denominator() &&
-         b.numerator() == a.numerator() + a.denominator();
+         __int128(b.numerator()) == __int128(a.numerator()) + a.denominator();  // 128 bits: no overflow
 }
 }  // namespace detail
 

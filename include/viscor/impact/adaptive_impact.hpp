@@ -110,13 +110,12 @@ struct regularised_law {
 
   regularised_law(const contact_law& law, const W& gamma_, const W& g_) : gamma(gamma_), g(g_) {
     if (law.alpha.is_rational() && law.beta.is_rational()) {
-      const std::int64_t q1 = law.alpha.denominator(), q2 = law.beta.denominator();
-      const std::int64_t q = std::lcm(q1, q2);
-      if (q <= max_regularising_denominator) {
+      const exponent_multiples m = law.multiples();  // checked: refuses Q alpha beyond 64 bits
+      if (m.Q <= max_regularising_denominator) {
         rational = true;
-        Q = q;
-        Qa = law.alpha.numerator() * (q / q1);
-        Qb = law.beta.numerator() * (q / q2);
+        Q = m.Q;
+        Qa = m.Q_alpha;
+        Qb = m.Q_beta;
       }
     }
     alpha = law.alpha.template value<W>();

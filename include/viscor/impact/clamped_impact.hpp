@@ -114,11 +114,11 @@ clamped_impact_result<Real> solve_clamped_impact_in(const contact_law& law, cons
   require_non_negative(gamma, "gamma");
   require_finite(g, "g");
   if (!law.alpha.is_rational() || !law.beta.is_rational() ||
-      law.alpha.numerator() * law.beta.denominator() < law.beta.numerator() * law.alpha.denominator())
+      __int128(law.alpha.numerator()) * law.beta.denominator() < __int128(law.beta.numerator()) * law.alpha.denominator())
     throw invalid_parameter("clamped impact needs rational exponents with alpha >= beta, got " + law.describe());
   const Real alpha = law.alpha.value<Real>(), beta = law.beta.value<Real>();
   const Real p = alpha - beta + 1, gamma_beta = gamma * beta;
-  const std::int64_t q = std::lcm(law.alpha.denominator(), law.beta.denominator());
+  const std::int64_t q = law.multiples().Q;
   using state = std::array<Real, 2>;
 
   auto h_of = [&](const state& y) { return Real(pow(y[0], p) + gamma_beta * y[1]); };

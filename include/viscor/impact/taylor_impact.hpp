@@ -173,8 +173,9 @@ class taylor_impact_solver {
     if (m_c.g > 0) m_u_eq = pow(m_c.g, 1 / m_c.alpha);
     if (law.alpha.is_rational() && law.beta.is_rational()) {
       // alpha + 1 = 2 beta, g = 0, underdamped: the spiral variables (impact_systems.hpp).
-      const long p1 = law.alpha.numerator(), q1 = law.alpha.denominator();
-      const long p2 = law.beta.numerator(), q2 = law.beta.denominator();
+      // In 128 bits: exact for any 64-bit numerators and denominators.
+      const __int128 p1 = law.alpha.numerator(), q1 = law.alpha.denominator();
+      const __int128 p2 = law.beta.numerator(), q2 = law.beta.denominator();
       m_spiral_possible = g == 0 && gamma > 0 && (p1 + q1) * q2 == 2 * p2 * q1 &&
                           m_c.gamma_beta * m_c.gamma_beta < 4 * m_c.beta;
     }

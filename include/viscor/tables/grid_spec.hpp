@@ -7,6 +7,7 @@
 // header is free of any file format. Every value is kept as an exact decimal.
 #pragma once
 
+#include <viscor/core/checked_arithmetic.hpp>
 #include <viscor/core/contact_law.hpp>
 #include <viscor/core/detail/exact_decimal.hpp>
 #include <viscor/core/exceptions.hpp>
@@ -16,6 +17,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <initializer_list>
 #include <iomanip>
 #include <map>
 #include <optional>
@@ -267,12 +269,31 @@ struct shard {
   }
 };
 
+/// The most rows one table may have (laws x g values x gamma values).
+inline constexpr std::int64_t max_table_rows = 100'000'000;
+
+/// Throws parse_error naming the spec when the product of `sizes` (checked
+/// arithmetic) exceeds max_table_rows.
+inline void refuse_too_many_rows(const grid_spec& spec, std::initializer_list<std::int64_t> sizes) {
+  std::int64_t rows = 1;
+  std::string product;
+  for (const std::int64_t n : sizes) {
+    product += (product.empty() ? "" : " x ") + std::to_string(n);
+    rows = checked_product(rows, n, spec.source + ": the number of table rows " + product);
+  }
+  if (rows > max_table_rows)
+    throw parse_error(spec.source + ": the table would have " + product + " = " + std::to_string(rows) +
+                      " rows, more than " + std::to_string(max_table_rows));
+}
+
 /// The points of the CoR table in table order: laws in the order given, then g
 /// ascending, then gamma ascending (so each e(gamma) curve at fixed g is one
 /// block of rows); only those of `part`.
 inline std::vector<grid_point> grid_points(const grid_spec& spec, const expanded_axes& axes, shard part = {}) {
   if (axes.gamma.empty()) throw parse_error(spec.source + ": field gamma: the table needs gamma values");
   if (axes.g.empty()) throw parse_error(spec.source + ": field g: the table needs g values");
+  refuse_too_many_rows(spec, {static_cast<std::int64_t>(spec.laws.size()), static_cast<std::int64_t>(axes.g.size()),
+                             static_cast<std::int64_t>(axes.gamma.size())});
   std::vector<grid_point> points;
   std::int64_t index = 0;
   for (const auto& law : spec.laws)
@@ -305,6 +326,7 @@ inline std::vector<threshold_point> threshold_points(const grid_spec& spec, cons
   if (!(for_g ? axes.g : axes.gamma).empty())
     throw parse_error(spec.source + ": field " + to_string(spec.solve_for) + ": a sticking table solves for " +
                       to_string(spec.solve_for) + "; remove its axis from the spec");
+  refuse_too_many_rows(spec, {static_cast<std::int64_t>(spec.laws.size()), static_cast<std::int64_t>(fixed.size())});
   std::vector<threshold_point> points;
   std::int64_t index = 0;
   for (const auto& law : spec.laws)

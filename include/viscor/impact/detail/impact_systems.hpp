@@ -88,10 +88,9 @@ impact_constants<Real> make_impact_constants(const contact_law& law, const Real&
   // NOTE: u = s^Q needs polynomials of degree Q(alpha+1) - 1; for huge
   // denominators the exponential variable is cheaper and just as exact.
   if (law.alpha.is_rational() && law.beta.is_rational()) {
-    const long q = std::lcm(law.alpha.denominator(), law.beta.denominator());
-    if (q <= 64) {
-      const long qa = q / law.alpha.denominator() * law.alpha.numerator();
-      const long qb = q / law.beta.denominator() * law.beta.numerator();
+    const exponent_multiples m = law.multiples();
+    if (m.Q <= 64) {
+      const long q = m.Q, qa = m.Q_alpha, qb = m.Q_beta;
       if (qa <= 512 && qb <= 512) {
         c.use_root_variable = true;
         c.Q = q, c.Q_alpha = qa, c.Q_beta = qb;
