@@ -46,6 +46,12 @@ def check(mutation, build_dir, jobs, log):
             f.write(original.replace(mutation["search"], mutation["replace"]))
         if run(["cmake", "--build", build_dir, "-j", str(jobs), "--target", *mutation["targets"]], log) != 0:
             return "error: the mutant does not build (not a useful mutation)"
+        # A regex that matches no test must not count as a kill (ctest's exit code alone
+        # cannot tell "no tests" from "a test failed"), so the tests are counted first.
+        listed = subprocess.run(["ctest", "--test-dir", build_dir, "-N", "-R", mutation["tests"], "-LE", "slow"],
+                                cwd=SOURCE, capture_output=True, text=True).stdout
+        if "Total Tests: 0" in listed or "Total Tests:" not in listed:
+            return f"error: no test matches '{mutation['tests']}'"
         rc = run(["ctest", "--test-dir", build_dir, "-R", mutation["tests"], "-LE", "slow", "--no-tests=error",
                   "-j", str(jobs)], log)
         return "killed" if rc != 0 else "SURVIVED"
