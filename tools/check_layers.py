@@ -3,7 +3,9 @@
 
 Every header under include/viscor/<folder>/ may include only headers of its own
 folder and of the folders ALLOWED lists for it; nothing but the umbrella and
-generated headers may sit directly in include/viscor/. Exits 1 and names each
+generated headers may sit directly in include/viscor/. The command-line front end
+(src/cli/) holds option parsing and printing only: no threads, signal handling or
+file reading and writing of its own (FRONT_END_FORBIDDEN). Exits 1 and names each
 offending include otherwise. Run: python3 tools/check_layers.py [repo root]
 """
 import pathlib
@@ -25,7 +27,16 @@ ALLOWED = {
     "surrogate": {"core", "exact", "ode", "impact", "certify", "approx", "tables"},
     "dem": {"core", "exact", "ode", "impact", "certify", "approx", "tables", "scenes", "surrogate"},
     "enclose": {"core"},  # proofs stand alone: never the solvers or closed forms they are checked against
+    # the jobs (tables, point batches, scenes, file formats, JSON fields) sit on everything
+    "jobs": {"core", "exact", "ode", "impact", "certify", "approx", "tables", "scenes", "surrogate", "dem",
+             "enclose"},
 }
+# The front ends parse options and print; the work is the library's (jobs/). These
+# words in src/cli/ mean threads, signal handling or a file format written by hand.
+FRONT_END_DIRS = ["src/cli"]
+FRONT_END_FORBIDDEN = re.compile(
+    r"std::thread|std::async|std::mutex|sigaction|std::signal\(|<csignal>|<thread>|std::ifstream|std::ofstream|"
+    r"sax_parse|json::parse\(|::open\(|::write\(")
 # Headers that pairs of folders must never include, even where ALLOWED would (the two
 # integrators are independent checks of each other, so neither may see the other).
 FORBIDDEN_PAIRS = [
@@ -70,6 +81,12 @@ def main() -> int:
         for a, b in FORBIDDEN_PAIRS:
             if rel == a and f"viscor/{b}" in path.read_text():
                 problems.append(f"{rel} includes viscor/{b}: the two are independent methods")
+    for front_end in FRONT_END_DIRS:
+        for path in sorted((root / front_end).rglob("*.[ch]pp")):
+            for number, line in enumerate(path.read_text().splitlines(), 1):
+                if FRONT_END_FORBIDDEN.search(line) and not line.lstrip().startswith("//"):
+                    problems.append(f"{path.relative_to(root)}:{number}: '{FRONT_END_FORBIDDEN.search(line).group(0)}' "
+                                    "in a front end: threads, signals and file formats belong in include/viscor/jobs/")
     for p in problems:
         print(p)
     print(f"check_layers: {len(problems)} problem(s) in {sum(1 for _ in base.rglob('*.hpp'))} headers")

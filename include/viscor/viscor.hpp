@@ -59,6 +59,20 @@
 #include <viscor/enclose/enclose.hpp>
 #endif
 
+// The jobs need nlohmann-json: they are part of the umbrella where the target
+// viscor::jobs (which defines VISCOR_WITH_JOBS) is linked.
+#if defined(VISCOR_WITH_JOBS)
+#include <viscor/jobs/cor_job.hpp>
+#include <viscor/jobs/data_directory.hpp>
+#include <viscor/jobs/point_batch.hpp>
+#include <viscor/jobs/scene_file.hpp>
+#include <viscor/jobs/surrogate_files.hpp>
+#include <viscor/jobs/table_jobs.hpp>
+#if defined(VISCOR_WITH_ENCLOSE)
+#include <viscor/jobs/proof_report.hpp>
+#endif
+#endif
+
 /// @namespace viscor
 /// The coefficient of restitution of a bead hitting a wall under a constant load,
 /// for visco-elastic contact laws: exact and approximate solutions, two independent
@@ -68,6 +82,11 @@
 /// @namespace viscor::dem
 /// The DEM bridge: damping parameters in the conventions of LAMMPS, LIGGGHTS and YADE
 /// (docs/dem.md).
+
+/// @namespace viscor::jobs
+/// The jobs as the command-line tool and the Python module run them, for C++
+/// programs: tables with shards, threads, progress and resume; point batches;
+/// scene files; the data directory; the file formats and JSON fields of all of them.
 
 /// @namespace viscor::surrogate
 /// Fitted double-precision surrogates of e(gamma, g) per contact law, with measured

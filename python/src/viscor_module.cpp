@@ -8,12 +8,14 @@
 //   surrogate a CoR surrogate file, evaluated in double
 // viscor's exceptions become the Python exceptions created here (ValueError
 // subclasses for bad input), with the library's messages.
-#include "certify_output.hpp"
 #include "cli_common.hpp"
 #include "command_registry.hpp"
-#include "cor_points.hpp"
-#include "data_directory.hpp"
-#include "surrogate_files.hpp"
+#include <viscor/jobs/cor_job.hpp>
+#include <viscor/jobs/scene_job.hpp>
+#include <viscor/jobs/table_jobs.hpp>
+#include <viscor/jobs/unit_checks.hpp>
+#include <viscor/jobs/data_directory.hpp>
+#include <viscor/jobs/surrogate_files.hpp>
 
 #include <viscor/core/precision.hpp>
 #include <viscor/impact/solve_impact.hpp>
@@ -42,7 +44,7 @@ namespace py = pybind11;
 namespace viscor::python {
 namespace {
 
-using json = cli::json;
+using json = jobs::json;
 
 // ---- exceptions ----
 
@@ -102,16 +104,7 @@ void register_exceptions(py::module_& m) {
 
 // ---- inputs ----
 
-// The law from a name, or from alpha and beta (decimal or p/q).
-contact_law resolve_law(const std::string& name, const std::string& alpha, const std::string& beta) {
-  if (!name.empty()) {
-    if (!alpha.empty() || !beta.empty())
-      throw invalid_parameter("give either the law's name or alpha and beta, not both (got law '" + name + "')");
-    return law_by_name(name);
-  }
-  if (alpha.empty() || beta.empty()) throw invalid_parameter("the contact law needs a name, or both alpha and beta");
-  return make_law(exponent::parse(alpha, "alpha"), exponent::parse(beta, "beta"));
-}
+using jobs::resolve_law;
 
 // A decimal, or p/q (a fraction whose decimal expansion does not end: p / q correctly
 // rounded when p and q are exact in Real).
@@ -168,19 +161,8 @@ json cor_json(const cor_request& q) {
     options.method = q.method == "taylor" ? integration_method::taylor : integration_method::adaptive;
     options.tolerance = parse_real<Real>(q.tolerance, "tolerance");
     options.max_steps = q.max_steps;
-    const auto start = std::chrono::steady_clock::now();
-    const impact_result<Real> r = solve_impact(law, gamma, g, options);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     j["command"] = "cor";
-    j["law"] = cli::law_json(law);
-    j["gamma"] = cli::number(gamma);
-    j["g"] = cli::number(g);
-    j["precision"] = cli::scalar_json<Real>();
-    cli::add_result_json(j, r, seconds);
-    if (q.certify) {
-      std::ostringstream ignored_text;
-      cli::certify_and_report<Real>(law, gamma, g, ignored_text, j);
-    }
+    jobs::add_cor_json(j, law, gamma, g, options, q.certify);
   });
   return j;
 }
@@ -192,6 +174,72 @@ py::object cor(const cor_request& q) {
     j = cor_json(q);
   }
   return to_python(j);
+}
+
+// ---- table: the table jobs ----
+
+struct table_request {
+  std::string spec_text, spec_name, output, shard;
+  bool from_file = false, sticking = false, resume = false, quiet = true;
+  int threads = -1;  // -1: every core
+};
+
+// Runs a table job without the GIL. Ctrl-C in Python stops it after the rows in
+// progress (the finished ones stay in OUT.partial for resume=True) and raises
+// KeyboardInterrupt with the job's message.
+std::string table(const table_request& q) {
+  const jobs::table_spec spec = q.from_file ? jobs::read_spec_json(q.spec_name)
+                                            : jobs::parse_spec_json(q.spec_text, q.spec_name);
+  jobs::table_run_options run;
+  run.output = q.output;
+  run.spec_file = q.from_file ? q.spec_name : std::string();
+  run.part = q.shard.empty() ? shard{} : shard::parse(q.shard);
+  run.resume = q.resume;
+  if (q.threads != -1) run.threads = q.threads;
+  run.quiet = q.quiet;
+  run.should_stop = [] {
+    py::gil_scoped_acquire gil;
+    return PyErr_CheckSignals() != 0;  // the Python exception stays set
+  };
+  std::exception_ptr failure;
+  {
+    py::gil_scoped_release release;
+    try {
+      if (q.sticking) jobs::make_sticking_table(spec, run);
+      else jobs::make_cor_table(spec, run);
+    } catch (...) {
+      failure = std::current_exception();
+    }
+  }
+  if (failure) {
+    if (PyErr_Occurred()) {  // interrupted from Python: raise that exception, with what was kept
+      try {
+        std::rethrow_exception(failure);
+      } catch (const std::exception& e) {
+        PyErr_Clear();
+        PyErr_SetString(PyExc_KeyboardInterrupt, e.what());
+      }
+      throw py::error_already_set();
+    }
+    std::rethrow_exception(failure);
+  }
+  return q.output;
+}
+
+// The columns and rows of a table file, validated by the library's reader.
+py::tuple table_columns(const std::string& path) {
+  const jobs::table_format format = jobs::table_format::of_file(path);
+  const csv_table t = format.read(path);
+  py::list header;
+  const std::string h = format.header();
+  for (std::size_t start = 0, end; start <= h.size(); start = end + 1) {
+    end = h.find(',', start);
+    if (end == std::string::npos) end = h.size();
+    header.append(h.substr(start, end - start));
+  }
+  py::list rows;
+  for (const auto& r : t.rows) rows.append(py::cast(r.fields));
+  return py::make_tuple(header, rows);
 }
 
 // ---- run: a subcommand in-process ----
@@ -363,12 +411,47 @@ PYBIND11_MODULE(_viscor, m) {
       py::arg("certify"), py::arg("method"), py::arg("tolerance"), py::arg("max_steps"),
       "One CoR: the object of `viscor cor --json` as a dict (decimal strings).");
 
+  py::class_<table_request>(m, "TableRequest")
+      .def(py::init<>())
+      .def_readwrite("spec_text", &table_request::spec_text)
+      .def_readwrite("spec_name", &table_request::spec_name)
+      .def_readwrite("from_file", &table_request::from_file)
+      .def_readwrite("output", &table_request::output)
+      .def_readwrite("shard", &table_request::shard)
+      .def_readwrite("sticking", &table_request::sticking)
+      .def_readwrite("resume", &table_request::resume)
+      .def_readwrite("quiet", &table_request::quiet)
+      .def_readwrite("threads", &table_request::threads);
+  m.def("table", &vp::table, py::arg("request"),
+        "Runs a table job (jobs/table_jobs.hpp) without the GIL; returns the output path.");
+  m.def("table_columns", &vp::table_columns, py::arg("path"),
+        "(column names, rows of decimal strings) of a viscor table file, checked by the library's reader.");
+  m.def(
+      "scene",
+      [](const std::string& path, const std::string& error_maps, const std::string& output) {
+        viscor::jobs::json object;
+        {
+          py::gil_scoped_release release;
+          const viscor::jobs::scene_file file = viscor::jobs::read_scene_json(path);
+          viscor::jobs::check_plausible_scene_units(file.scene, false,
+                                                    [&](const std::string& field) { return file.locate(field); });
+          const bool as_json = output.empty() || output.ends_with(".json");
+          viscor::jobs::scene_result r = viscor::jobs::run_scene_file(file, path, error_maps, as_json);
+          if (!output.empty()) viscor::jobs::write_atomically(output, r.body);
+          object = std::move(r.object);
+        }
+        return output.empty() ? vp::to_python(object) : py::object(py::none());
+      },
+      py::arg("path"), py::arg("error_maps"), py::arg("output"),
+      "The scene job (jobs/scene_job.hpp): its JSON object as a dict, or with `output` the file written (CSV, or "
+      "JSON when it ends in .json) and None.");
+
   m.def("run", &vp::run, py::arg("args"),
         "Runs `viscor ARGS...` in-process and returns what it prints; raises on errors.");
 
-  m.def("data_directory", [] { return viscor::cli::data_directory(); },
+  m.def("data_directory", [] { return viscor::jobs::data_directory(); },
         "The data directory (certified tables, error maps) the CLI code would use.");
-  m.def("default_error_maps", [] { return viscor::cli::default_error_maps(); },
+  m.def("default_error_maps", [] { return viscor::jobs::default_error_maps(); },
         "The error maps directory of the data directory, or ''.");
 
   py::class_<viscor::surrogate::cor_surrogate, std::shared_ptr<viscor::surrogate::cor_surrogate>>(m, "Surrogate")
@@ -394,7 +477,7 @@ PYBIND11_MODULE(_viscor, m) {
           },
           py::arg("gamma"), py::arg("g"))
       .def_property_readonly("error_bound", [](const viscor::surrogate::cor_surrogate& s) {
-        return vp::to_python(viscor::cli::surrogate_bound_json(s));
+        return vp::to_python(viscor::jobs::surrogate_bound_json(s));
       });
 
   py::class_<evaluate_request>(m, "Evaluator")

@@ -19,6 +19,7 @@ from ._viscor import (CertificationError, ConvergenceError, Error, InvalidParame
                       PrecisionUnavailable, Surrogate)
 from ._inputs import NAMED_LAWS, check_digits as _check_digits, law_texts as _law_texts, number_text as _text
 from ._result import Result
+from ._table import Table
 from ._commands import approx, calibrate, dem, exact, run_cli, scale, scene, table, read_table, find_surrogate
 from ._evaluate import EVALUATION_METHODS, Evaluation, evaluate
 
@@ -34,7 +35,7 @@ git_commit = _viscor.git_commit
 max_working_digits = _viscor.max_working_digits
 
 __all__ = ["cor", "exact", "approx", "calibrate", "scale", "table", "read_table", "scene", "dem", "evaluate",
-           "Evaluation", "EVALUATION_METHODS", "Surrogate", "find_surrogate", "run_cli", "Result", "NAMED_LAWS",
+           "Evaluation", "EVALUATION_METHODS", "Surrogate", "find_surrogate", "run_cli", "Result", "Table", "NAMED_LAWS",
            "Error", "InvalidParameter", "PrecisionUnavailable", "ParseError", "ConvergenceError",
            "CertificationError", "data_directory"]
 

@@ -14,6 +14,7 @@ import os
 from . import _viscor
 from ._inputs import check_digits, law_texts, number_text
 from ._result import Result
+from ._table import Table
 
 
 def run_cli(*args):
@@ -99,25 +100,49 @@ def dem(code, *, digits=None, **options):
 
 
 def scene(file, out=None, *, error_maps=None):
-    """Every impact of a scene file to its tolerance (``viscor scene``, docs/scenes.md).
+    """Every impact of a scene file to its tolerance (the scene job, as ``viscor scene``,
+    docs/scenes.md).
 
-    Without `out`: the Result of ``--json``. With `out`: writes it (CSV, or JSON
-    when it ends in .json) like ``-o``, only on success, and returns the path."""
-    words = ["scene", os.fspath(file)] + _options(error_maps=error_maps)
+    Without `out`: a Result with the fields of ``viscor scene --json``. With `out`:
+    writes it (CSV, or JSON when it ends in .json) like ``-o``, only on success, and
+    returns the path."""
+    maps = "" if error_maps is None else os.fspath(error_maps)
     if out is None:
-        return Result(json.loads(run_cli(*words, "--json")))
-    run_cli(*words, "-o", os.fspath(out))
+        return Result(_viscor.scene(os.fspath(file), maps, ""))
+    _viscor.scene(os.fspath(file), maps, os.fspath(out))
     return os.fspath(out)
 
 
 def table(spec, out, *, resume=False, shard=None, threads=None, quiet=True, sticking=False):
-    """A certified reference table from a grid spec (``viscor table SPEC -o OUT``,
-    docs/tables.md): writes OUT (CSV) and OUT.json (its sidecar); returns OUT.
-    sticking=True computes sticking thresholds (``viscor table sticking``)."""
-    words = ["table"] + (["sticking"] if sticking else []) + [os.fspath(spec), "-o", os.fspath(out)]
-    words += _options(resume=resume, shard=shard, threads=threads, quiet=quiet)
-    run_cli(*words)
-    return os.fspath(out)
+    """A certified reference table from a grid spec (the table job, as ``viscor table
+    SPEC -o OUT``, docs/tables.md): writes OUT (CSV) and OUT.json (its sidecar).
+
+    spec: a spec file's path, or the spec as a dict (the file's JSON). Returns a Table:
+    the path OUT (a str, as before) with the table's columns as NumPy arrays
+    (``t.column('e')``) and as exact decimal strings (``t.strings('e')``).
+    sticking=True computes sticking thresholds (``viscor table sticking``). The work
+    runs without the GIL; Ctrl-C stops it after the rows in progress, which are kept:
+    call again with resume=True to finish."""
+    q = _viscor.TableRequest()
+    if isinstance(spec, dict):
+        q.spec_text = json.dumps(spec)
+        q.spec_name = "<spec dict>"
+    else:
+        q.spec_name = os.fspath(spec)
+        q.from_file = True
+    q.output = os.fspath(out)
+    for name, value in (("resume", resume), ("quiet", quiet), ("sticking", sticking)):
+        if not isinstance(value, bool):
+            raise TypeError(f"{name} must be True or False, got {value!r}")
+    q.resume, q.quiet, q.sticking = resume, quiet, sticking
+    if shard is not None:
+        q.shard = shard if isinstance(shard, str) else f"{shard[0]}/{shard[1]}"
+    if threads is not None:
+        if isinstance(threads, bool) or not isinstance(threads, int):
+            raise TypeError(f"threads must be a whole number, got {threads!r}")
+        q.threads = threads
+    _viscor.table(q)
+    return Table(q.output)
 
 
 def read_table(path):

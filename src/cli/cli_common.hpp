@@ -13,32 +13,24 @@
 #include <viscor/core/exceptions.hpp>
 #include <viscor/core/precision.hpp>
 #include <viscor/core/real_io.hpp>
+#include <viscor/jobs/json_fields.hpp>
+#include <viscor/jobs/files.hpp>
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
-#include <cerrno>
-#include <cstdio>
-#include <cstring>
-#include <fcntl.h>
-#include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <string>
-#include <sys/stat.h>
-#include <unistd.h>
 
 namespace viscor::cli {
 
-using json = nlohmann::ordered_json;
+// The subcommands are front ends of the jobs (include/viscor/jobs/): they use its
+// names unqualified.
+using namespace viscor::jobs;
+using json = jobs::json;
 
 inline bool ends_with(const std::string& text, const std::string& tail) {
   return text.size() >= tail.size() && text.compare(text.size() - tail.size(), tail.size(), tail) == 0;
-}
-
-/// An old spelling that still works (until 1.0): one line on stderr naming the new one.
-inline void deprecation_warning(const std::string& old_spelling, const std::string& new_spelling) {
-  std::cerr << "viscor: warning: " << old_spelling << " is deprecated; use " << new_spelling << "\n";
 }
 
 /// --model NAME | --alpha A --beta B (exponents accept fractions: --alpha 3/2).
@@ -94,33 +86,9 @@ struct output_options {
     std::cerr << "viscor: wrote " << path << " (" << body.size() << " bytes)\n";
   }
 
-  /// Writes `body` to `path`: into a new temporary file beside it (every write,
-  /// the fsync and the close checked), then renamed over `path`. Only regular files
-  /// are written: an existing `path` that is not a regular file (a device, a FIFO, a
-  /// directory, a symbolic link) is refused and left alone. Any failure removes the
-  /// temporary and throws, so nothing is left behind.
+  /// The library's safe write (jobs/files.hpp).
   static void write_atomically(const std::string& path, const std::string& body) {
-    refuse_unless_regular_or_absent(path);
-    const std::string temporary = path + ".tmp." + std::to_string(::getpid());
-    const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-    if (fd < 0) throw error("cannot write output file '" + path + "': " + std::strerror(errno));
-    const bool written = write_all(fd, body) && ::fsync(fd) == 0;
-    const int saved = errno;
-    if (::close(fd) != 0 || !written) {
-      ::unlink(temporary.c_str());
-      throw error("writing output file '" + path + "' failed: " + std::strerror(written ? errno : saved));
-    }
-    try {
-      refuse_unless_regular_or_absent(path);  // again: it may have appeared meanwhile
-    } catch (...) {
-      ::unlink(temporary.c_str());
-      throw;
-    }
-    if (::rename(temporary.c_str(), path.c_str()) != 0) {
-      const int e = errno;
-      ::unlink(temporary.c_str());
-      throw error("cannot move output into '" + path + "': " + std::strerror(e));
-    }
+    jobs::write_atomically(path, body);
   }
 
   /// A CLI11 check of an output option: refuses, before any work, a path that
@@ -138,95 +106,9 @@ struct output_options {
         "FILE", "REGULAR_OUTPUT_FILE");
   }
 
-  /// Throws invalid_parameter naming `path` when it exists and is not a regular file
-  /// (checked without following a symbolic link).
   static void refuse_unless_regular_or_absent(const std::string& path) {
-    struct stat st {};
-    if (::lstat(path.c_str(), &st) != 0) return;  // absent (or unreachable: the open says why)
-    if (S_ISREG(st.st_mode)) return;
-    const char* kind = S_ISLNK(st.st_mode) ? "a symbolic link" : S_ISDIR(st.st_mode) ? "a directory"
-                       : S_ISFIFO(st.st_mode) ? "a FIFO" : S_ISCHR(st.st_mode) || S_ISBLK(st.st_mode) ? "a device"
-                                                                                                    : "not a regular file";
-    throw invalid_parameter("output file '" + path + "' exists and is " + kind +
-                            "; viscor writes only regular files (name a new or regular file)");
-  }
-
- private:
-  static bool write_all(int fd, const std::string& body) {
-    std::size_t done = 0;
-    while (done < body.size()) {
-      const ssize_t n = ::write(fd, body.data() + done, body.size() - done);
-      if (n < 0 && errno == EINTR) continue;
-      if (n <= 0) return false;
-      done += static_cast<std::size_t>(n);
-    }
-    return true;
+    jobs::refuse_unless_regular_or_absent(path);
   }
 };
-
-/// The offset of the first byte of `text` that is not part of valid UTF-8
-/// (std::string::npos if there is none): input files are UTF-8 text.
-inline std::size_t first_invalid_utf8(const std::string& text) {
-  const auto byte = [&](std::size_t i) { return static_cast<unsigned char>(text[i]); };
-  for (std::size_t i = 0; i < text.size();) {
-    const unsigned char c = byte(i);
-    std::size_t length = 0;
-    unsigned char low = 0x80, high = 0xBF;  // allowed range of the second byte
-    if (c < 0x80) length = 1;
-    else if (c >= 0xC2 && c <= 0xDF) length = 2;
-    else if (c >= 0xE0 && c <= 0xEF) length = 3, low = c == 0xE0 ? 0xA0 : 0x80, high = c == 0xED ? 0x9F : 0xBF;
-    else if (c >= 0xF0 && c <= 0xF4) length = 4, low = c == 0xF0 ? 0x90 : 0x80, high = c == 0xF4 ? 0x8F : 0xBF;
-    else return i;
-    if (i + length > text.size()) return i;
-    for (std::size_t k = 1; k < length; ++k) {
-      const unsigned char b = byte(i + k);
-      if (b < (k == 1 ? low : 0x80) || b > (k == 1 ? high : 0xBF)) return i;
-    }
-    i += length;
-  }
-  return std::string::npos;
-}
-
-/// The deepest nesting of JSON objects and arrays viscor reads (its own files nest
-/// 4 levels at most): deeper input is refused before it costs time or stack.
-inline constexpr std::size_t max_json_depth = 64;
-
-/// Parses JSON text read from `where` (a file name, for errors); refuses nesting
-/// deeper than max_json_depth. Throws parse_error naming `where`.
-inline json parse_json_text(const std::string& text, const std::string& where) {
-  try {
-    return json::parse(text, [&where](int depth, json::parse_event_t, json&) {
-      if (static_cast<std::size_t>(depth) > max_json_depth)
-        throw parse_error(where + ": JSON nested deeper than " + std::to_string(max_json_depth) + " levels");
-      return true;
-    });
-  } catch (const json::exception& e) {
-    throw parse_error(where + ": invalid JSON: " + e.what());
-  }
-}
-
-/// A Real as a JSON string at full working precision.
-template <class Real>
-std::string number(const Real& x) {
-  return to_decimal_string(x);
-}
-
-/// Law description for JSON.
-inline json law_json(const contact_law& law) {
-  json j;
-  j["name"] = law.name;
-  j["alpha"] = law.alpha.to_string();
-  j["beta"] = law.beta.to_string();
-  return j;
-}
-
-/// The name and precision of the scalar type in use.
-template <class Real>
-json scalar_json() {
-  json j;
-  j["digits"] = decimal_digits<Real>();
-  j["binary_digits"] = binary_digits<Real>();
-  return j;
-}
 
 }  // namespace viscor::cli

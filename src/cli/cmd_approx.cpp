@@ -5,7 +5,7 @@
 // Chebyshev-Beta approximation.
 #include "cli_common.hpp"
 #include "command_registry.hpp"
-#include "surrogate_files.hpp"
+#include <viscor/jobs/surrogate_files.hpp>
 
 #include <viscor/approx/approximations.hpp>
 

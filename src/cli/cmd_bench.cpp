@@ -18,8 +18,8 @@
 // solve in double on the same kind of points, in the same run.
 #include "cli_common.hpp"
 #include "command_registry.hpp"
-#include "data_directory.hpp"
-#include "surrogate_files.hpp"
+#include <viscor/jobs/data_directory.hpp>
+#include <viscor/jobs/surrogate_files.hpp>
 
 #include <viscor/scenes/error_map.hpp>
 #include <viscor/scenes/evaluate.hpp>

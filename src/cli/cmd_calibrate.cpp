@@ -7,7 +7,7 @@
 #include "cli_common.hpp"
 #include "command_registry.hpp"
 #include "physical_options.hpp"
-#include "surrogate_files.hpp"
+#include <viscor/jobs/surrogate_files.hpp>
 
 #include <viscor/core/scaling.hpp>
 #include <viscor/scenes/calibration.hpp>

@@ -2,17 +2,17 @@
 // working precision (solve_impact, Taylor method by default). Parameters are
 // scaled (--gamma, --g) or physical (--m --k --gamma0 --v0 --gravity [--force],
 // converted by eq. (2)); or many points from a file (--points, cor_points.hpp).
-#include "certify_output.hpp"
+#include <viscor/jobs/certify_report.hpp>
 #include "cli_common.hpp"
 #include "command_registry.hpp"
-#include "cor_points.hpp"
+#include <viscor/jobs/point_batch.hpp>
 #include "physical_options.hpp"
 
 #include <viscor/core/scaling.hpp>
 #include <viscor/impact/solve_impact.hpp>
 
 #if VISCOR_HAS_ARB
-#include "proof_output.hpp"
+#include <viscor/jobs/proof_report.hpp>
 #endif
 
 #include <chrono>

@@ -302,37 +302,14 @@ struct dem_command {
     return {};
   }
 
-  /// True when `path` holds a drop deck viscor wrote (its first line is the marker).
-  static bool written_by_viscor(const std::string& path) {
-    std::ifstream in(path);
-    std::string first;
-    std::getline(in, first);
-    return first.rfind(dem::drop_deck_marker, 0) == 0;
-  }
-
-  /// Writes the deck through a temporary file; never replaces a file viscor did not write.
+  /// Writes the deck (jobs/files.hpp); never replaces a file viscor did not write
+  /// (a drop deck's first line is the marker).
   void write_drop_deck(const std::string& deck) const {
-    namespace fs = std::filesystem;
     std::error_code ec;
-    if (fs::exists(drop_deck_path, ec) && !written_by_viscor(drop_deck_path))
+    if (std::filesystem::exists(drop_deck_path, ec) && !file_starts_with(drop_deck_path, dem::drop_deck_marker))
       throw invalid_parameter("--drop-deck " + drop_deck_path + ": the file exists and is not a drop deck viscor "
                               "wrote; refusing to replace it (remove it or choose another name)");
-    const std::string temporary = drop_deck_path + ".tmp." + std::to_string(::getpid());
-    {
-      std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-      if (!out) throw error("--drop-deck " + drop_deck_path + ": cannot write '" + temporary + "'");
-      out << deck;
-      out.flush();
-      if (!out) {
-        std::remove(temporary.c_str());
-        throw error("--drop-deck " + drop_deck_path + ": writing '" + temporary + "' failed");
-      }
-    }
-    fs::rename(temporary, drop_deck_path, ec);
-    if (ec) {
-      std::remove(temporary.c_str());
-      throw error("--drop-deck " + drop_deck_path + ": cannot move the deck into place: " + ec.message());
-    }
+    write_atomically(drop_deck_path, deck);
   }
 
   template <class Real>

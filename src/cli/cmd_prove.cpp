@@ -4,7 +4,7 @@
 #include "command_registry.hpp"
 
 #if VISCOR_HAS_ARB
-#include "proof_output.hpp"
+#include <viscor/jobs/proof_report.hpp>
 
 #include <algorithm>
 #include <sstream>

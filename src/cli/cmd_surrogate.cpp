@@ -7,7 +7,8 @@
 // maximum x safety factor) meet the targets. docs/surrogate.md has the details.
 #include "cli_common.hpp"
 #include "command_registry.hpp"
-#include "table_runner.hpp"
+#include "test_hooks.hpp"
+#include <viscor/jobs/table_runner.hpp>
 
 #include <viscor/config.hpp>
 #include <viscor/surrogate/cor_surrogate.hpp>
@@ -23,7 +24,6 @@
 #include <iostream>
 #include <memory>
 #include <sstream>
-#include <thread>
 
 namespace viscor::cli::cmd_surrogate {  // named: the subcommands share translation units (unity build)
 namespace {
@@ -45,7 +45,7 @@ struct surrogate_spec {
 surrogate_spec read_surrogate_spec(const std::string& path) {
   json j;
   try {
-    j = parse_json_text(detail::read_file(path), path);
+    j = read_json_file(path);
   } catch (const json::exception& e) {
     throw parse_error(path + ": not valid JSON: " + e.what());
   }
@@ -167,7 +167,7 @@ struct build_command {
     fit_key["viscor_version"] = VISCOR_VERSION;
     bool reused = false;
     if (resume && std::filesystem::exists(fit_file) && std::filesystem::exists(fit_file + ".json")) {
-      const json meta = detail::read_json_file(fit_file + ".json");
+      const json meta = read_json_file(fit_file + ".json");
       if (meta.value("fit_spec", json()) == fit_key) {
         s = read_cor_surrogate(fit_file);
         fit_json = meta.value("fit", json());
@@ -182,7 +182,7 @@ struct build_command {
                   {"threshold_intervals", report.threshold_intervals},
                   {"unconverged_patches", report.unconverged_patches},
                   {"worst_check_over_tolerance", report.worst_check_ratio}, {"seconds", report.seconds},
-                  {"g_split", s.g_split}, {"git_commit", git_commit()}, {"date", detail::iso_time_utc(std::time(nullptr))}};
+                  {"g_split", s.g_split}, {"git_commit", git_commit()}, {"date", iso_time_utc(std::time(nullptr))}};
       std::ostringstream fitted;
       write_cor_surrogate(fitted, s);
       output_options::write_atomically(fit_file, fitted.str());
@@ -190,7 +190,7 @@ struct build_command {
                                                                          "reused by --resume"},
                                                                 {"fit_spec", fit_key}, {"fit", fit_json}}.dump(2) + "\n");
       say("fit: " + std::to_string(report.patches_low) + " + " + std::to_string(report.patches_high) + " patches, " +
-          std::to_string(report.solves) + " solves, " + detail::duration_text(report.seconds));
+          std::to_string(report.solves) + " solves, " + duration_text(report.seconds));
     }
 
     // 2. the verification points, certified by the table machinery.
@@ -207,6 +207,8 @@ struct build_command {
     job.resume = resume;
     job.threads = threads;
     job.quiet = quiet;
+    job.handle_signals = true;
+    job.stop_after_rows = test_hooks::table_stop_after_rows();
     json& p = job.provenance;
     p["viscor_version"] = VISCOR_VERSION;
     p["git_commit"] = git_commit();
@@ -282,7 +284,7 @@ struct build_command {
     side["what"] = "CoR surrogate (viscor::surrogate::cor_surrogate) of " + spec.fit.law.describe();
     side["viscor_version"] = VISCOR_VERSION;
     side["git_commit"] = git_commit();
-    side["command"] = detail::command_line();
+    side["command"] = command_line();
     side["spec_file"] = spec_path;
     side["spec"] = spec.normalised;
     side["fit"] = fit_json;
@@ -293,8 +295,8 @@ struct build_command {
                            {"abs_e", s.bound.abs_e}, {"abs_e_squared", s.bound.abs_e_squared},
                            {"rel_one_minus_e", s.bound.rel_one_minus_e}};
     side["wall_time_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
-    side["date"] = detail::iso_time_utc(std::time(nullptr));
-    side["host"] = detail::host_name();
+    side["date"] = iso_time_utc(std::time(nullptr));
+    side["host"] = host_name();
     output_options::write_atomically(output + ".json", side.dump(2) + "\n");
     say("wrote '" + output + "' and '" + output + ".json'");
   }

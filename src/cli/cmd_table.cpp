@@ -2,335 +2,55 @@
 //   viscor table SPEC.json -o OUT.csv [--resume] [--shard i/N] [--threads N] [--quiet]
 //   viscor table merge A.csv B.csv ... -o OUT.csv
 //   viscor table sticking SPEC.json -o OUT.csv [--resume] [--shard i/N] [--threads N] [--quiet]
-// Rows come from compute_row / compute_threshold_row (table_row.hpp,
-// sticking_threshold.hpp), and for method "proven" also from viscor::enclose
-// (proven_rows.hpp); files, threads, progress and resume from table_runner.hpp.
+// The options of the table jobs (include/viscor/jobs/table_jobs.hpp), which do the work.
 #include "cli_common.hpp"
 #include "command_registry.hpp"
-#include "proven_table.hpp"
-#include "spec_json.hpp"
-#include "table_runner.hpp"
+#include "test_hooks.hpp"
 
-#if VISCOR_HAS_ARB
-#include "proven_rows.hpp"
-#endif
+#include <viscor/jobs/table_jobs.hpp>
+#include <viscor/jobs/table_spec.hpp>
 
-#include <viscor/config.hpp>
-#include <viscor/tables/grid_spec.hpp>
-#include <viscor/tables/reference_table.hpp>
-#include <viscor/tables/sticking_threshold.hpp>
-#include <viscor/tables/table_row.hpp>
-
-#include <filesystem>
-#include <map>
 #include <memory>
-#include <thread>
 
 namespace viscor::cli::cmd_table {  // named: the subcommands share translation units (unity build)
 namespace {
 
-json scalar_provenance(int digits) {
-  return with_working_precision(digits, [&]<class Real>() {
-    json j;
-    j["type"] = to_string(scalar_for_digits(digits));
-    j["requested_digits"] = digits;
-    j["decimal_digits"] = decimal_digits<Real>();
-    j["binary_digits"] = binary_digits<Real>();
-    return j;
-  });
-}
-
-/// The digits a row of method "proven" is proven at: those of the working type the
-/// row is certified in (the spec's digits, or more: float128 carries 33 at 30), so
-/// that the proof's cap on proven digits is never below the certificate's arithmetic.
-int proof_digits(int digits) {
-  return std::max(digits, with_working_precision(digits, []<class Real>() { return decimal_digits<Real>(); }));
-}
-
-json method_provenance(const table_spec& table) {
-  const grid_spec& spec = table.grid;
-  json j;
-  j["requested"] = table.proven ? std::string("proven") : to_string(spec.method);
-  j["exact"] = describe(row_source::exact);
-  j["certified"] = describe(row_source::certified);
-  j["tolerances"] =
-      "exact: closed forms, with TOMS748 root finding to the working precision where a time is implicit; "
-      "certified: the tolerances of viscor::certify at the working precision";
-  j["min_digits"] = spec.min_digits;
-  if (spec.method != row_method::exact) {
-    const certify_options defaults;
-    j["certify"] = {
-        {"computations", "taylor at the working precision; taylor at the reference precision; adaptive (GBS) at "
-                         "the working precision, and again at the reference precision where it is undecided at the "
-                         "working one (the linear law: its closed form at the working and the reference precision)"},
-        {"reference_digits",
-         with_working_precision(spec.digits, []<class Real>() { return viscor::detail::reference_digits<Real>(); })},
-        {"safety_margin", defaults.safety_margin},
-        {"step_tolerance", "the epsilon of each computation's precision (solve_options default)"},
-        {"digits", "the least agreement of the taylor run at the working precision and of the adaptive run (at "
-                   "the reference precision where that one is used) with the reference over e, 1 - e, T_f and "
-                   "u_max, minus the safety margin"}};
-  }
-  if (table.proven)
-    j["proof"] = {
-        {"what", "viscor::enclose (include/viscor/enclose/, docs/proofs.md) on the exact decimal gamma and g of each "
-                 "certified row: validated Taylor integration in Arb ball arithmetic"},
-        {"digits", proof_digits(spec.digits)},
-        {"ball_bits", "ceil(digits log2 10) + 24, rounded up to a multiple of 64"},
-        {"columns", "e_lower <= e <= e_upper and one_minus_e_lower <= 1 - e <= one_minus_e_upper (decimals rounded "
-                    "outwards); proven_digits: the correctly rounded digits of e on which both bounds agree (at most "
-                    "digits); outcome_proven: rebound, stick, or undecided (empty bounds, 0 digits)"},
-        {"checks", "a proof that contradicts its certified row (outcome, or e or 1 - e outside the enclosure by more "
-                   "than a unit of the last certified digit) stops the run"}};
-  return j;
-}
-
 /// Options shared by `table` and `table sticking`.
 struct run_options {
-  std::string spec_path, output, shard_text;
-  bool resume = false, quiet = false;
-  int threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  std::string spec_path, shard_text;
+  table_run_options run;
 
   void add_to(CLI::App& app) {
     app.add_option("spec", spec_path, "grid specification, JSON (docs/tables.md, section 'Grid specification')");
-    app.add_option("-o,--output", output, "output table OUT.csv (its sidecar is OUT.csv.json)")
+    app.add_option("-o,--output", run.output, "output table OUT.csv (its sidecar is OUT.csv.json)")
       ->check(output_options::regular_output_file());
-    app.add_flag("--resume", resume, "continue an interrupted run from OUT.csv.partial");
+    app.add_flag("--resume", run.resume, "continue an interrupted run from OUT.csv.partial");
     app.add_option("--shard", shard_text, "compute only shard i of N (0 <= i < N): rows with index % N == i");
-    app.add_option("--threads", threads, "worker threads (default: all cores)")->capture_default_str();
-    app.add_flag("--quiet", quiet, "no progress output");
+    app.add_option("--threads", run.threads, "worker threads (default: all cores)")->capture_default_str();
+    app.add_flag("--quiet", run.quiet, "no progress output");
   }
 
-  // Checks the options; nothing is read or written yet.
-  shard check(const std::string& command) const {
+  /// Checks the options, then reads the spec.
+  std::pair<table_spec, table_run_options> read(const std::string& command) const {
     if (spec_path.empty()) throw invalid_parameter(command + " needs a spec file: " + command + " SPEC.json -o OUT.csv");
-    if (output.empty()) throw invalid_parameter(command + " needs an output file: -o OUT.csv");
-    if (threads < 1 || threads > 4096)
-      throw invalid_parameter("--threads must be from 1 to 4096, got " + std::to_string(threads));
-    return shard_text.empty() ? shard{} : shard::parse(shard_text);
-  }
-
-  table_job job(table_kind kind, const table_spec& table, shard part, std::int64_t rows_total) const {
-    const grid_spec& spec = table.grid;
-    table_job j;
-    j.kind = kind;
-    j.proven = table.proven;
-    j.output = output;
-    j.resume = resume;
-    j.threads = threads;
-    j.quiet = quiet;
-    json& p = j.provenance;
-    p["viscor_version"] = VISCOR_VERSION;
-    p["git_commit"] = git_commit();
-    p["kind"] = kind == table_kind::cor ? "cor" : "sticking";
-    p["columns"] = table_format{kind, table.proven}.header();
-    p["rows_total"] = rows_total;
-    p["shard"] = part.whole() ? json(nullptr) : json{{"index", part.index}, {"count", part.count}};
-    p["spec_file"] = spec_path;
-    p["spec"] = spec_to_json(table);  // method "proven" in it: a proven and a certified run never mix
-    p["scalar"] = scalar_provenance(spec.digits);
-    p["method"] = method_provenance(table);
-    return j;
+    if (run.output.empty()) throw invalid_parameter(command + " needs an output file: -o OUT.csv");
+    table_run_options r = run;
+    if (r.threads < 1 || r.threads > 4096)
+      throw invalid_parameter("--threads must be from 1 to 4096, got " + std::to_string(r.threads));
+    r.part = shard_text.empty() ? shard{} : shard::parse(shard_text);
+    r.spec_file = spec_path;
+    r.handle_signals = true;
+    r.stop_after_rows = test_hooks::table_stop_after_rows();
+    r.certified_e_shift = test_hooks::certified_e_shift();
+    return {read_spec_json(spec_path), r};
   }
 };
 
-/// Method "proven": refuses (exit 2), before any work, a build without Arb, too
-/// few digits for a proof, or a law with an exponent that is not rational.
-void require_proof(const table_spec& table) {
-#if !VISCOR_HAS_ARB
-  throw invalid_parameter(table.method_where + ": field method: \"proven\" needs a viscor built with Arb "
-                          "(apt-get install libflint-arb-dev)");
-#endif
-  const grid_spec& spec = table.grid;
-  if (spec.digits < 5)
-    throw parse_error(spec.source + ": field digits: method \"proven\" needs at least 5 digits, got " +
-                      std::to_string(spec.digits));
-  for (const auto& law : spec.laws) require_provable(law, spec.source + ": field laws: " + law.describe());
-}
-
-// ---- viscor table SPEC.json ----
-void run_table(const run_options& options) {
-  const shard part = options.check("viscor table");
-  const table_spec table = read_spec_json(options.spec_path);
-  const grid_spec& spec = table.grid;
-  if (spec.threshold_digits > 0)
-    throw parse_error(options.spec_path + ": field threshold_digits: this is a sticking-threshold spec; run it with "
-                      "'viscor table sticking'");
-  const expanded_axes axes = expand(spec);
-  const auto points = std::make_shared<std::vector<grid_point>>(grid_points(spec, axes, part));
-  // Every point must be computable before anything is written.
-  for (const auto& p : *points)
-    require_computable(p.law, p.gamma == "0", p.g == "0", spec.method,
-                       options.spec_path + ": row " + std::to_string(p.index) + " (" + p.law.describe() +
-                           ", gamma = " + p.gamma + ", g = " + p.g + ")");
-  if (table.proven) require_proof(table);
-  table_job job = options.job(table_kind::cor, table, part, grid_size(spec, axes));
-  for (const auto& p : *points) job.indices.push_back(p.index);
-  const table_settings settings = table_settings::from(spec);
-  job.compute_line = [points, settings](std::size_t i) { return csv_line(compute_row((*points)[i], settings)); };
-#if VISCOR_HAS_ARB
-  if (table.proven)
-    job.compute_line = [points, settings, digits = proof_digits(spec.digits)](std::size_t i) {
-      const grid_point& p = (*points)[i];
-      const table_row row = compute_row(p, settings);
-      return csv_line(row) + proven_fields(p, digits, row);
-    };
-#endif
-  run_table_job(job);
-}
-
-// ---- viscor table sticking SPEC.json ----
-void run_sticking(const run_options& options) {
-  const shard part = options.check("viscor table sticking");
-  const table_spec table = read_spec_json(options.spec_path);
-  const grid_spec& spec = table.grid;
-  if (table.proven)
-    throw parse_error(table.method_where + ": field method: \"proven\" is a method of CoR tables (viscor table); "
-                      "sticking thresholds are certified (\"auto\", \"certify\" or \"exact\")");
-  if (spec.threshold_digits < 1)
-    throw parse_error(options.spec_path + ": field threshold_digits: missing: a sticking-threshold spec gives the "
-                      "digits wanted, e.g. \"threshold_digits\": 30");
-  if (spec.threshold_digits > spec.digits - 5)
-    throw parse_error(options.spec_path + ": field threshold_digits: must be at most digits - 5 = " +
-                      std::to_string(spec.digits - 5) + ", got " + std::to_string(spec.threshold_digits));
-  const expanded_axes axes = expand(spec);
-  const std::int64_t rows_total = static_cast<std::int64_t>(spec.laws.size()) *
-      static_cast<std::int64_t>((spec.solve_for == threshold_variable::g ? axes.gamma : axes.g).size());
-  const auto points = std::make_shared<std::vector<threshold_point>>(threshold_points(spec, axes, part));
-  const bool for_g = spec.solve_for == threshold_variable::g;
-  for (const auto& p : *points)  // the search moves the solved-for parameter away from 0
-    require_computable(p.law, false, !for_g && p.fixed == "0", spec.method,
-                       options.spec_path + ": row " + std::to_string(p.index) + " (" + p.law.describe() +
-                           (for_g ? ", gamma = " : ", g = ") + p.fixed + ")");
-  table_job job = options.job(table_kind::sticking, table, part, rows_total);
-  for (const auto& p : *points) job.indices.push_back(p.index);
-  job.provenance["threshold"] = {
-      {"solve_for", to_string(spec.solve_for)},
-      {"requested_digits", spec.threshold_digits},
-      {"algorithm", "bracket by doubling from 0, then bisection on the certified outcome (rebound or stick) until "
-                    "the bracket [rebound_at, stick_at] is 10^-(digits+1) of the threshold; the threshold column is "
-                    "the bracket's midpoint rounded to 'digits' digits"}};
-  const table_settings settings = table_settings::from(spec);
-  const int digits = spec.threshold_digits;
-  job.compute_line = [points, settings, digits](std::size_t i) {
-    return csv_line(compute_threshold_row((*points)[i], digits, settings));
-  };
-  run_table_job(job);
-}
-
-// ---- viscor table merge A.csv B.csv ... -o OUT.csv ----
 struct merge_options {
   std::vector<std::string> inputs;
   std::string output;
   bool quiet = false;
 };
-
-void run_merge(const merge_options& options) {
-  if (options.inputs.empty()) throw invalid_parameter("viscor table merge needs the shard tables to merge");
-  if (options.output.empty()) throw invalid_parameter("viscor table merge needs an output file: -o OUT.csv");
-  struct input {
-    std::string path;
-    table_format format;
-    csv_table table;
-    json sidecar;
-  };
-  std::vector<input> inputs;
-  for (const auto& path : options.inputs) {
-    if (std::filesystem::exists(path + ".partial"))
-      throw error("'" + path + "' is unfinished ('" + path + ".partial' exists): complete it with --resume first");
-    const table_format format = table_format::of_file(path);
-    input in{path, format, format.read(path), json()};
-    if (!std::filesystem::exists(path + ".json"))
-      throw error("'" + path + ".json' (the sidecar of '" + path +
-                  "') is missing: merge needs it to check that the shards come from the same spec and version");
-    in.sidecar = detail::read_json_file(path + ".json");
-    for (const char* key : {"viscor_version", "kind", "spec", "rows_total"})
-      if (!in.sidecar.contains(key))
-        throw parse_error(path + ".json: field " + std::string(key) + ": missing; not a viscor table sidecar");
-    inputs.push_back(std::move(in));
-  }
-  // Same spec, kind, precision and viscor version everywhere; shards may differ.
-  auto common = [](const json& sidecar) {
-    json f = table_fingerprint(sidecar);
-    f.erase("shard");
-    return f;
-  };
-  const json reference = common(inputs.front().sidecar);
-  const std::int64_t rows_total = reference.value("rows_total", std::int64_t(-1));
-  for (const auto& in : inputs) {
-    if (in.table.kind != inputs.front().table.kind || in.format.proven != inputs.front().format.proven)
-      throw parse_error(in.path + ":1: wrong columns: the tables to merge must be of one kind");
-    if (common(in.sidecar) != reference)
-      throw error("cannot merge '" + in.path + "' with '" + inputs.front().path +
-                  "': their sidecars record a different spec, precision, method or viscor version");
-  }
-  // Every grid row exactly once, each in the shard that claims it.
-  std::map<std::int64_t, std::pair<const input*, std::size_t>> seen;  // index -> (file, line)
-  std::vector<csv_record> rows;
-  for (const auto& in : inputs) {
-    const json s = in.sidecar.value("shard", json(nullptr));
-    const shard part = s.is_object() ? shard{s.value("index", std::int64_t(0)), s.value("count", std::int64_t(1))}
-                                     : shard{};
-    for (const auto& row : in.table.rows) {
-      if (row.index >= rows_total)
-        throw parse_error(in.path + ":" + std::to_string(row.line) + ": field index: " + std::to_string(row.index) +
-                          " is beyond the grid's " + std::to_string(rows_total) + " rows");
-      if (!part.contains(row.index))
-        throw parse_error(in.path + ":" + std::to_string(row.line) + ": field index: row " +
-                          std::to_string(row.index) + " does not belong to shard " + part.to_string());
-      const auto [it, fresh] = seen.emplace(row.index, std::make_pair(&in, row.line));
-      if (!fresh)
-        throw parse_error(in.path + ":" + std::to_string(row.line) + ": field index: row " +
-                          std::to_string(row.index) + " is also in " + it->second.first->path + ":" +
-                          std::to_string(it->second.second));
-      rows.push_back(row);
-    }
-  }
-  if (static_cast<std::int64_t>(rows.size()) != rows_total) {
-    std::int64_t missing = 0;
-    while (seen.count(missing)) ++missing;
-    throw error("cannot merge: the tables hold " + std::to_string(rows.size()) + " of the grid's " +
-                std::to_string(rows_total) + " rows; row " + std::to_string(missing) +
-                " is missing (a shard not given, or not finished?)");
-  }
-  const table_format& format = inputs.front().format;
-  const std::string text = format.text(rows, options.output);
-
-  json sidecar = inputs.front().sidecar;
-  double wall_total = 0;
-  json parts = json::array();
-  for (const auto& in : inputs) {
-    const double w = in.sidecar.value("wall_time_seconds", 0.0);
-    wall_total += w;
-    parts.push_back({{"table", in.path},
-                     {"shard", in.sidecar.value("shard", json(nullptr))},
-                     {"rows", in.table.rows.size()},
-                     {"host", in.sidecar.value("host", "")},
-                     {"date", in.sidecar.value("date", "")},
-                     {"threads", in.sidecar.value("threads", 0)},
-                     {"wall_time_seconds", w},
-                     {"command_line", in.sidecar.value("command_line", "")}});
-  }
-  sidecar["table"] = std::filesystem::path(options.output).filename().string();
-  sidecar["rows"] = rows.size();
-  sidecar["shard"] = nullptr;
-  std::size_t exact_rows = 0;
-  for (const auto& row : rows) exact_rows += row.fields[format.method_column()] == "exact";
-  sidecar["rows_by_method"] = {{"exact", exact_rows}, {"certified", rows.size() - exact_rows}};
-  if (format.proven) sidecar["proofs"] = proof_summary(rows);
-  sidecar["command_line"] = detail::command_line();
-  sidecar["host"] = detail::host_name();
-  sidecar["date"] = detail::iso_time_utc(std::time(nullptr));
-  sidecar["wall_time_seconds"] = wall_total;
-  sidecar["merged_from"] = parts;
-  for (const char* k : {"threads", "sessions", "rows_from_earlier_sessions"}) sidecar.erase(k);
-
-  output_options::write_atomically(options.output, text);
-  output_options::write_atomically(options.output + ".json", sidecar.dump(2) + "\n");
-  if (!options.quiet)
-    std::cerr << "viscor table merge: wrote " << options.output << " (" << rows.size() << " rows from "
-              << inputs.size() << " tables)\n";
-}
 
 void setup(CLI::App& app) {
   auto table = std::make_shared<run_options>();
@@ -341,17 +61,22 @@ void setup(CLI::App& app) {
   merge->add_option("tables", merging->inputs, "the shard tables A.csv B.csv ... (each with its .json sidecar)");
   merge->add_option("-o,--output", merging->output, "the merged table OUT.csv");
   merge->add_flag("--quiet", merging->quiet, "no summary line");
-  merge->callback([merging] { run_merge(*merging); });
+  merge->callback([merging] { merge_tables(merging->inputs, merging->output, merging->quiet); });
 
   CLI::App* sticking = app.add_subcommand(
       "sticking", "certified sticking thresholds g_c(gamma) or gamma_c(g) (spec: solve_for, threshold_digits)");
   auto thresholds = std::make_shared<run_options>();
   thresholds->add_to(*sticking);
-  sticking->callback([thresholds] { run_sticking(*thresholds); });
+  sticking->callback([thresholds] {
+    const auto [spec, run] = thresholds->read("viscor table sticking");
+    make_sticking_table(spec, run);
+  });
 
   app.require_subcommand(0, 1);
   app.callback([table, &app] {
-    if (app.get_subcommands().empty()) run_table(*table);
+    if (!app.get_subcommands().empty()) return;
+    const auto [spec, run] = table->read("viscor table");
+    make_cor_table(spec, run);
   });
 }
 

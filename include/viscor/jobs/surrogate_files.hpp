@@ -1,10 +1,11 @@
-// Where the CLI finds the committed surrogates: $VISCOR_SURROGATE_DIR, else
+// Where viscor finds the committed surrogates: $VISCOR_SURROGATE_DIR, else
 // <data directory>/surrogates (data_directory.hpp: installed share/viscor or the
 // source tree's reference_data), and the JSON of a surrogate evaluation (docs/surrogate.md).
 #pragma once
 
-#include "cli_common.hpp"
-#include "data_directory.hpp"
+#include <viscor/jobs/json_fields.hpp>
+#include <viscor/jobs/files.hpp>
+#include <viscor/jobs/data_directory.hpp>
 
 #include <viscor/surrogate/cor_surrogate.hpp>
 
@@ -12,9 +13,10 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <string>
 
-namespace viscor::cli {
+namespace viscor::jobs {
 
 inline std::string surrogate_directory() {
   if (const char* dir = std::getenv("VISCOR_SURROGATE_DIR"); dir && *dir) return dir;
@@ -22,9 +24,12 @@ inline std::string surrogate_directory() {
 }
 
 /// The committed surrogate of a named law, or nullptr (custom law, or no file).
+/// Read once per law and kept; safe to call from several threads.
 inline const surrogate::cor_surrogate* find_surrogate(const contact_law& law) {
   static std::map<std::string, std::unique_ptr<surrogate::cor_surrogate>> cache;
+  static std::mutex mutex;
   if (law.name.empty()) return nullptr;
+  const std::lock_guard<std::mutex> lock(mutex);
   auto it = cache.find(law.name);
   if (it == cache.end()) {
     const std::string path = surrogate_directory() + "/" + law.name + ".surrogate";
@@ -48,4 +53,4 @@ inline json surrogate_bound_json(const surrogate::cor_surrogate& s) {
           {"outcome", "correct except within relative 1e-10 in g of the sticking threshold"}};
 }
 
-}  // namespace viscor::cli
+}  // namespace viscor::jobs

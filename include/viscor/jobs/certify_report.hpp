@@ -4,7 +4,8 @@
 // the claim. JSON field names are those of certified_result / certified_computation.
 #pragma once
 
-#include "cli_common.hpp"
+#include <viscor/jobs/json_fields.hpp>
+#include <viscor/jobs/files.hpp>
 
 #include <viscor/certify/certification.hpp>
 
@@ -13,7 +14,7 @@
 #include <sstream>
 #include <string>
 
-namespace viscor::cli {
+namespace viscor::jobs {
 
 /// x rounded to `digits` significant digits ("uncertified" for 0 digits); e = 0 of a
 /// certified stick and infinite times print exactly.
@@ -88,4 +89,4 @@ void certify_and_report(const contact_law& law, const Real& gamma, const Real& g
   }
 }
 
-}  // namespace viscor::cli
+}  // namespace viscor::jobs

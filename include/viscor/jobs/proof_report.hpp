@@ -2,14 +2,15 @@
 // `viscor cor --prove` (docs/proofs.md): the same JSON names in both (docs/json-schema.md).
 #pragma once
 
-#include "cli_common.hpp"
+#include <viscor/jobs/json_fields.hpp>
+#include <viscor/jobs/files.hpp>
 
 #include <viscor/enclose/enclose.hpp>
 
 #include <sstream>
 #include <string>
 
-namespace viscor::cli {
+namespace viscor::jobs {
 
 /// Proves the impact of `law` at the exact decimals (gamma, g) with viscor::enclose
 /// and adds the bounds, proven digits and proven outcome to `j` and `text`.
@@ -42,4 +43,4 @@ inline proofs::cor_enclosure add_proof(const contact_law& law, const std::string
   return p;
 }
 
-}  // namespace viscor::cli
+}  // namespace viscor::jobs

@@ -3,8 +3,9 @@
 // exact decimal 0.1 at any precision; errors name file, line and field.
 #pragma once
 
-#include "cli_common.hpp"
-#include "spec_json.hpp"
+#include <viscor/jobs/json_fields.hpp>
+#include <viscor/jobs/files.hpp>
+#include <viscor/jobs/table_spec.hpp>
 
 #include <viscor/scenes/scene.hpp>
 
@@ -14,7 +15,7 @@
 #include <sstream>
 #include <string>
 
-namespace viscor::cli {
+namespace viscor::jobs {
 
 /// A parsed scene file: the description, where its fields are, and its options.
 struct scene_file {
@@ -245,4 +246,4 @@ inline scene_file read_scene_json(const std::string& path) {
   return parse_scene_json(s.str(), path);
 }
 
-}  // namespace viscor::cli
+}  // namespace viscor::jobs

@@ -9,7 +9,8 @@
 // proofs (tools/check_layers.py), and the library's CoR format stays as it is.
 #pragma once
 
-#include "cli_common.hpp"
+#include <viscor/jobs/json_fields.hpp>
+#include <viscor/jobs/files.hpp>
 
 #include <viscor/core/contact_law.hpp>
 #include <viscor/core/detail/exact_decimal.hpp>
@@ -24,7 +25,7 @@
 #include <utility>
 #include <vector>
 
-namespace viscor::cli {
+namespace viscor::jobs {
 
 /// The proof's columns, after the CoR columns.
 inline const std::vector<std::string>& proven_columns() {
@@ -190,4 +191,4 @@ struct table_format {
   }
 };
 
-}  // namespace viscor::cli
+}  // namespace viscor::jobs

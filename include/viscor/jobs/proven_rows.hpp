@@ -1,11 +1,10 @@
-// The proof's columns of one row of a table of method "proven" (proven_table.hpp,
+// The proof's columns of one row of a table of method "proven" (table_format.hpp,
 // docs/tables.md): viscor::enclose at the spec's digits on the row's exact decimal
 // gamma and g, after the row has been certified as method "certify" does
 // (compute_row). Needs Arb (VISCOR_HAS_ARB).
 #pragma once
 
-#include "proven_table.hpp"
-#include "test_hooks.hpp"
+#include <viscor/jobs/table_format.hpp>
 
 #include <viscor/core/detail/exact_decimal.hpp>
 #include <viscor/core/exceptions.hpp>
@@ -17,7 +16,7 @@
 #include <string>
 #include <tuple>
 
-namespace viscor::cli {
+namespace viscor::jobs {
 
 namespace detail {
 
@@ -61,8 +60,11 @@ inline bool within_last_digit(const std::string& value, int digits, const std::s
 /// proven_digits is e's (as in `viscor prove --json`); an undecided proof gives empty
 /// bounds and 0 digits. Throws certification_error (and no row is written) when the
 /// proof contradicts the certified row: another outcome, or e or 1 - e outside the
-/// enclosure by more than a unit of its last certified digit.
-inline std::string proven_fields(const grid_point& p, int digits, const table_row& row) {
+/// enclosure by more than a unit of its last certified digit. `certified_e_shift`
+/// is a test seam: a decimal added to the certified e before the check, so that
+/// tests can show the check stops a run ("" in every release path).
+inline std::string proven_fields(const grid_point& p, int digits, const table_row& row,
+                                 const std::string& certified_e_shift = "") {
   using proofs::proven_outcome;
   const std::string where = "row " + std::to_string(p.index) + " (" + p.law.describe() + ", gamma = " + p.gamma +
                             ", g = " + p.g + ")";
@@ -80,7 +82,7 @@ inline std::string proven_fields(const grid_point& p, int digits, const table_ro
                               " (" + proof.how + "), the certificate " + std::string(to_string(row.outcome)) +
                               "; one of the two is wrong: please report it");
   using viscor::detail::exact_decimal;
-  const std::string shift = test_hooks::certified_e_shift();  // tests only (test_hooks.hpp): "" in a release
+  const std::string& shift = certified_e_shift;
   const std::string e =
       shift.empty() ? row.e : (exact_decimal::parse(row.e, "e") + exact_decimal::parse(shift, "shift")).to_string();
   for (const auto& [name, value, bounds] : {std::tuple{"e", &e, &proof.e},
@@ -93,4 +95,4 @@ inline std::string proven_fields(const grid_point& p, int digits, const table_ro
          "," + std::to_string(proof.e.digits) + "," + std::string(proofs::to_string(proof.outcome));
 }
 
-}  // namespace viscor::cli
+}  // namespace viscor::jobs

@@ -12,7 +12,8 @@
 // the proofs, so grid_spec holds method certify and table_spec says "proven".
 #pragma once
 
-#include "cli_common.hpp"
+#include <viscor/jobs/json_fields.hpp>
+#include <viscor/jobs/files.hpp>
 
 #include <viscor/tables/grid_spec.hpp>
 
@@ -26,7 +27,7 @@
 #include <string>
 #include <vector>
 
-namespace viscor::cli {
+namespace viscor::jobs {
 
 namespace detail {
 
@@ -447,4 +448,4 @@ inline json spec_to_json(const table_spec& table) {
   return j;
 }
 
-}  // namespace viscor::cli
+}  // namespace viscor::jobs

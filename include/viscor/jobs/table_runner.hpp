@@ -7,9 +7,10 @@
 // byte-identical however the run was split, interrupted or threaded.
 #pragma once
 
-#include "cli_common.hpp"
-#include "proven_table.hpp"
-#include "test_hooks.hpp"
+#include <viscor/jobs/json_fields.hpp>
+#include <viscor/jobs/files.hpp>
+#include <viscor/jobs/provenance.hpp>
+#include <viscor/jobs/table_format.hpp>
 
 #include <viscor/config.hpp>
 #include <viscor/tables/reference_table.hpp>
@@ -32,6 +33,7 @@
 #include <iomanip>
 #include <iostream>
 #include <mutex>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <string>
@@ -39,7 +41,7 @@
 #include <unistd.h>
 #include <vector>
 
-namespace viscor::cli {
+namespace viscor::jobs {
 
 /// What to compute and where to put it.
 struct table_job {
@@ -55,6 +57,15 @@ struct table_job {
   bool resume = false;
   int threads = 1;
   bool quiet = false;
+  /// Ctrl-C and SIGTERM stop the run after the rows in progress (a second one at
+  /// once); the command-line tool sets it. Off, the caller's own handlers stay.
+  bool handle_signals = false;
+  /// Asked about every 0.2 s from the calling thread: true stops the run like an
+  /// interrupt (the finished rows are kept). The Python module checks Ctrl-C here.
+  std::function<bool()> should_stop;
+  /// A test seam: after this many rows of this session the run interrupts itself,
+  /// as a Ctrl-C would; -1: never.
+  long long stop_after_rows = -1;
 };
 
 /// What must agree between a partial run and its resumption, and (without
@@ -104,61 +115,6 @@ class interrupt_guard {
  private:
   struct sigaction m_old_int {}, m_old_term {};
 };
-
-inline std::string iso_time_utc(std::time_t t) {
-  std::tm tm{};
-  gmtime_r(&t, &tm);
-  char buffer[32];
-  std::strftime(buffer, sizeof buffer, "%Y-%m-%dT%H:%M:%SZ", &tm);
-  return buffer;
-}
-
-inline std::string host_name() {
-  char buffer[256] = {};
-  if (gethostname(buffer, sizeof buffer - 1) != 0) return "unknown";
-  return buffer;
-}
-
-/// The exact command line of this process (Linux /proc), shell-quoted.
-inline std::string command_line() {
-  std::ifstream in("/proc/self/cmdline", std::ios::binary);
-  std::string raw((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  std::string line;
-  std::size_t start = 0;
-  while (start < raw.size()) {
-    std::size_t end = raw.find('\0', start);
-    if (end == std::string::npos) end = raw.size();
-    std::string arg = raw.substr(start, end - start);
-    if (arg.empty() || arg.find_first_of(" \t\n'\"\\$`*?;&|<>()") != std::string::npos) {
-      std::string quoted = "'";
-      for (char c : arg) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-      arg = quoted + "'";
-    }
-    line += (line.empty() ? "" : " ") + arg;
-    start = end + 1;
-  }
-  return line;
-}
-
-inline std::string read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw error("cannot read '" + path + "'");
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-inline json read_json_file(const std::string& path) { return parse_json_text(read_file(path), path); }
-
-inline std::string duration_text(double seconds) {
-  if (!(seconds >= 0) || seconds > 1e9) return "--:--";
-  const long long s = static_cast<long long>(seconds + 0.5);
-  std::ostringstream out;
-  out << std::setfill('0');
-  if (s >= 3600) out << s / 3600 << ':' << std::setw(2) << (s / 60) % 60 << ':' << std::setw(2) << s % 60;
-  else out << std::setw(2) << s / 60 << ':' << std::setw(2) << s % 60;
-  return out.str();
-}
 
 /// Progress on standard error: a bar redrawn in place on a terminal, plain
 /// lines every `interval` seconds otherwise.
@@ -238,9 +194,17 @@ inline void remove_file(const std::string& path) {
 
 }  // namespace detail
 
+/// What a finished run did.
+struct table_run_summary {
+  std::size_t rows = 0;                       ///< rows in the output table
+  std::size_t rows_from_earlier_sessions = 0;  ///< rows an interrupted run had already finished
+  bool already_complete = false;               ///< --resume of a finished table: nothing was computed
+  double wall_time_seconds = 0;                ///< of this session
+};
+
 /// Runs the job; throws viscor::error on failure or interruption (the partial
 /// file is then kept for --resume).
-inline void run_table_job(const table_job& job) {
+inline table_run_summary run_table_job(const table_job& job) {
   using namespace std::chrono;
   const std::string partial = job.output + ".partial", partial_meta = job.output + ".partial.json";
   const auto wall_start = steady_clock::now();
@@ -250,7 +214,7 @@ inline void run_table_job(const table_job& job) {
   const table_format format{job.kind, job.proven};
   // Before any work: every file this run writes must be a regular file or absent.
   for (const std::string& path : {job.output, job.output + ".json", partial, partial_meta})
-    output_options::refuse_unless_regular_or_absent(path);
+    refuse_unless_regular_or_absent(path);
 
   // Rows already done by an interrupted run.
   std::set<std::int64_t> done;
@@ -263,7 +227,7 @@ inline void run_table_job(const table_job& job) {
   if (have_partial) {
     if (!std::filesystem::exists(partial_meta))
       throw error("cannot resume: '" + partial_meta + "' (what the partial run was computing) is missing");
-    meta = detail::read_json_file(partial_meta);
+    meta = read_json_file(partial_meta);
     if (meta.value("fingerprint", json()) != fingerprint)
       throw error("cannot resume: '" + partial + "' was made from a different spec, shard or viscor version "
                   "(see '" + partial_meta + "'); delete both files to start afresh");
@@ -281,7 +245,7 @@ inline void run_table_job(const table_job& job) {
     // Rewrite without a line cut short by a kill, so appends start on a fresh line.
     std::string clean = format.header() + "\n";
     for (const auto& row : earlier) clean += row.text + "\n";
-    output_options::write_atomically(partial, clean);
+    write_atomically(partial, clean);
     if (!job.quiet)
       std::cerr << "viscor table: resuming: " << done.size() << " of " << job.indices.size()
                 << " rows already done" << (table.truncated_tail ? " (dropped one row cut short)" : "") << '\n';
@@ -290,21 +254,24 @@ inline void run_table_job(const table_job& job) {
     if (job.resume && std::filesystem::exists(job.output) && std::filesystem::exists(job.output + ".json")) {
       bool complete = false;
       try {
-        complete = table_fingerprint(detail::read_json_file(job.output + ".json")) == fingerprint &&
+        complete = table_fingerprint(read_json_file(job.output + ".json")) == fingerprint &&
                    format.read(job.output).rows.size() == job.indices.size();
       } catch (const error&) {
         complete = false;  // unreadable: compute it again
       }
       if (complete) {
         if (!job.quiet) std::cerr << "viscor table: '" << job.output << "' is already complete; nothing to do\n";
-        return;
+        table_run_summary summary;
+        summary.rows = job.indices.size();
+        summary.already_complete = true;
+        return summary;
       }
     }
     if (job.resume && !job.quiet) std::cerr << "viscor table: nothing to resume; computing every row\n";
     meta["fingerprint"] = fingerprint;
     meta["note"] = "an interrupted viscor table run: rerun the same command with --resume";
-    output_options::write_atomically(partial_meta, meta.dump(2) + "\n");
-    output_options::write_atomically(partial, format.header() + "\n");
+    write_atomically(partial_meta, meta.dump(2) + "\n");
+    write_atomically(partial, format.header() + "\n");
   }
   const double earlier_wall = meta.value("wall_time_seconds", 0.0);
   const int earlier_sessions = meta.value("sessions", 0);
@@ -313,11 +280,13 @@ inline void run_table_job(const table_job& job) {
   for (std::size_t i = 0; i < job.indices.size(); ++i)
     if (!done.count(job.indices[i])) pending.push_back(i);
 
-  // Test seam (test_hooks.hpp; inert in the released binary): interrupt after N rows.
-  const long long stop_after = test_hooks::table_stop_after_rows();
+  const long long stop_after = job.stop_after_rows;
 
   {
-    detail::interrupt_guard guard;
+    detail::interrupts = 0;
+    std::optional<detail::interrupt_guard> guard;
+    if (job.handle_signals) guard.emplace();
+    std::atomic<bool> stop_requested{false};  // by should_stop, or by the test seam without signals
     detail::line_appender out(partial);
     detail::progress_meter progress(job.indices.size(), done.size(), job.quiet);
     std::mutex mutex;
@@ -329,7 +298,7 @@ inline void run_table_job(const table_job& job) {
 
     auto worker = [&] {
       for (;;) {
-        if (stop || detail::interrupts > 0) return;
+        if (stop || stop_requested || detail::interrupts > 0) return;
         const std::size_t k = next++;
         if (k >= pending.size()) return;
         std::string line;
@@ -338,7 +307,10 @@ inline void run_table_job(const table_job& job) {
           std::lock_guard lock(mutex);
           out.append(line);
           ++finished;
-          if (stop_after >= 0 && static_cast<long long>(finished) == stop_after) std::raise(SIGINT);
+          if (stop_after >= 0 && static_cast<long long>(finished) == stop_after) {
+            if (job.handle_signals) std::raise(SIGINT);  // exactly what a Ctrl-C does
+            else stop_requested = true;
+          }
         } catch (...) {
           std::lock_guard lock(mutex);
           if (!failure) failure = std::current_exception();
@@ -364,17 +336,22 @@ inline void run_table_job(const table_job& job) {
       while (running > 0) {
         wake.wait_for(lock, milliseconds(200));
         progress.update(finished);
+        if (job.should_stop && !stop_requested) {
+          lock.unlock();  // the callback may take its time (the Python module takes the GIL)
+          if (job.should_stop()) stop_requested = true;
+          lock.lock();
+        }
       }
     }
     for (auto& t : pool) t.join();
     progress.update(finished, /*final=*/true);
 
     const double wall = duration<double>(steady_clock::now() - wall_start).count();
-    const bool interrupted = detail::interrupts > 0;
+    const bool interrupted = detail::interrupts > 0 || stop_requested;
     if (failure || interrupted) {
       meta["wall_time_seconds"] = earlier_wall + wall;
       meta["sessions"] = earlier_sessions + 1;
-      output_options::write_atomically(partial_meta, meta.dump(2) + "\n");
+      write_atomically(partial_meta, meta.dump(2) + "\n");
       const std::string kept = std::to_string(done.size() + finished) + " of " +
                                std::to_string(job.indices.size()) + " rows are done and kept in '" + partial + "'";
       if (failure) {
@@ -406,21 +383,26 @@ inline void run_table_job(const table_job& job) {
   sidecar["rows"] = table.rows.size();
   sidecar["rows_by_method"] = {{"exact", exact_rows}, {"certified", certified_rows}};
   if (format.proven) sidecar["proofs"] = proof_summary(table.rows);
-  sidecar["command_line"] = detail::command_line();
-  sidecar["host"] = detail::host_name();
-  sidecar["date"] = detail::iso_time_utc(started);
+  sidecar["command_line"] = command_line();
+  sidecar["host"] = host_name();
+  sidecar["date"] = iso_time_utc(started);
   sidecar["threads"] = job.threads;
   sidecar["wall_time_seconds"] = earlier_wall + wall;
   sidecar["sessions"] = earlier_sessions + 1;
   sidecar["rows_from_earlier_sessions"] = done.size();
 
-  output_options::write_atomically(job.output, text);
-  output_options::write_atomically(job.output + ".json", sidecar.dump(2) + "\n");
+  write_atomically(job.output, text);
+  write_atomically(job.output + ".json", sidecar.dump(2) + "\n");
   detail::remove_file(partial);
   detail::remove_file(partial_meta);
   if (!job.quiet)
     std::cerr << "viscor table: wrote " << job.output << " (" << table.rows.size() << " rows) and " << job.output
               << ".json in " << std::fixed << std::setprecision(2) << wall << " s\n";
+  table_run_summary summary;
+  summary.rows = table.rows.size();
+  summary.rows_from_earlier_sessions = done.size();
+  summary.wall_time_seconds = wall;
+  return summary;
 }
 
-}  // namespace viscor::cli
+}  // namespace viscor::jobs

@@ -1,9 +1,13 @@
-// Where the CLI finds its data (the certified tables and the error maps):
-//   1. the directory given on the command line (--data, --error-maps, a scene's error_maps),
+// Where viscor's committed data is found (the certified tables, error maps and
+// surrogates), the same for the command-line tool, the Python module and a C++
+// program linked to viscor::jobs:
+//   1. the directory given (--data, --error-maps, a scene's error_maps, an argument),
 //   2. $VISCOR_DATA,
-//   3. <prefix>/share/viscor next to the installed executable (<prefix>/bin/viscor),
-//   4. the source tree's reference_data/ when run from the build tree
-//      (VISCOR_SOURCE_DATA_DIR, set by CMake for the build tree only).
+//   3. <prefix>/share/viscor next to the running executable (<prefix>/bin/viscor),
+//   4. the installed share/viscor of the viscor a program was built against
+//      (VISCOR_INSTALLED_DATA_DIR, set by the installed target viscor::jobs),
+//   5. the source tree's reference_data/ for programs of the build tree
+//      (VISCOR_SOURCE_DATA_DIR, set by viscor::jobs in the build tree only).
 #pragma once
 
 #include <viscor/core/exceptions.hpp>
@@ -13,7 +17,7 @@
 #include <string>
 #include <system_error>
 
-namespace viscor::cli {
+namespace viscor::jobs {
 
 /// The directory of the running executable ("" if unknown).
 inline std::filesystem::path executable_directory() {
@@ -39,6 +43,10 @@ inline std::string data_directory(const std::string& given = "") {
     if (fs::is_directory(installed)) return installed.string();
     tried = installed.string();
   }
+#ifdef VISCOR_INSTALLED_DATA_DIR
+  if (fs::is_directory(VISCOR_INSTALLED_DATA_DIR)) return VISCOR_INSTALLED_DATA_DIR;
+  tried += std::string(tried.empty() ? "" : ", ") + VISCOR_INSTALLED_DATA_DIR;
+#endif
 #ifdef VISCOR_SOURCE_DATA_DIR
   if (fs::is_directory(VISCOR_SOURCE_DATA_DIR)) return VISCOR_SOURCE_DATA_DIR;
   tried += std::string(tried.empty() ? "" : ", ") + VISCOR_SOURCE_DATA_DIR;
@@ -56,4 +64,4 @@ inline std::string default_error_maps() {
   }
 }
 
-}  // namespace viscor::cli
+}  // namespace viscor::jobs

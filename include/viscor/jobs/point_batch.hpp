@@ -6,8 +6,10 @@
 // printed in input order; with --threads N, N points are solved at a time.
 #pragma once
 
-#include "cli_common.hpp"
-#include "spec_json.hpp"
+#include <viscor/jobs/json_fields.hpp>
+#include <viscor/jobs/files.hpp>
+#include <viscor/jobs/cor_job.hpp>
+#include <viscor/jobs/table_spec.hpp>
 
 #include <viscor/impact/solve_impact.hpp>
 
@@ -16,30 +18,14 @@
 #include <chrono>
 #include <cstdio>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
 
-namespace viscor::cli {
-
-/// The result fields shared by `cor --json` and every `cor --points` line.
-template <class Real>
-void add_result_json(json& j, const impact_result<Real>& r, double seconds) {
-  j["method"] = std::string(to_string(r.method));
-  j["e"] = number(r.e);
-  j["one_minus_e"] = number(r.one_minus_e);
-  j["outcome"] = std::string(to_string(r.outcome));
-  j["contact_time"] = number(r.contact_time);
-  j["max_compression"] = number(r.max_compression);
-  if (r.outcome == impact_outcome::stick) j["stop_overlap"] = number(r.stop_overlap);
-  j["time_of_max_compression"] = number(r.time_of_max_compression);
-  j["energy_residual"] = number(r.energy_residual);
-  j["error_estimate"] = number(r.error_estimate);
-  j["steps"] = r.steps;
-  j["seconds"] = seconds;
-}
+namespace viscor::jobs {
 
 struct point_options {
   integration_method method = integration_method::taylor;
@@ -112,15 +98,11 @@ inline json solve_point(const point_text& p, const point_options& o, bool& refus
   json j;
   j["line"] = p.line;
   try {
-    contact_law law;
-    if (!p.law.empty()) {
-      if (!p.alpha.empty() || !p.beta.empty())
-        throw invalid_parameter("give either law or alpha and beta, not both");
-      law = law_by_name(p.law);
-    } else {
-      if (p.alpha.empty() || p.beta.empty()) throw invalid_parameter("needs law, or both alpha and beta");
-      law = make_law(exponent::parse(p.alpha, "alpha"), exponent::parse(p.beta, "beta"));
-    }
+    // A point's fields are named law, alpha, beta: the messages say so.
+    if (!p.law.empty() && (!p.alpha.empty() || !p.beta.empty()))
+      throw invalid_parameter("give either law or alpha and beta, not both");
+    if (p.law.empty() && (p.alpha.empty() || p.beta.empty())) throw invalid_parameter("needs law, or both alpha and beta");
+    const contact_law law = resolve_law(p.law, p.alpha, p.beta);
     if (p.gamma.empty()) throw invalid_parameter("missing gamma");
     int digits = o.default_digits;
     if (!p.digits.empty()) {
@@ -135,14 +117,7 @@ inline json solve_point(const point_text& p, const point_options& o, bool& refus
       options.tolerance = parse_real<Real>(o.tolerance, "tolerance");
       options.max_steps = o.max_steps;
       const Real gamma = parse_real<Real>(p.gamma, "gamma"), g = parse_real<Real>(p.g, "g");
-      const auto start = std::chrono::steady_clock::now();
-      const impact_result<Real> r = solve_impact(law, gamma, g, options);
-      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      j["law"] = law_json(law);
-      j["gamma"] = number(gamma);
-      j["g"] = number(g);
-      j["precision"] = scalar_json<Real>();
-      add_result_json(j, r, seconds);
+      add_cor_json(j, law, gamma, g, options);
     });
   } catch (const error& e) {
     j["error"] = e.what();
@@ -153,17 +128,12 @@ inline json solve_point(const point_text& p, const point_options& o, bool& refus
 
 }  // namespace detail
 
-/// Reads points from `path` ("-": standard input), writes one JSON line per point
-/// to `out`; returns the number of refused points (each named on stderr too).
-inline std::size_t solve_points(const std::string& path, const point_options& o, std::ostream& out) {
-  std::ifstream file;
-  if (path != "-") {
-    file.open(path);
-    if (!file) throw invalid_parameter("--points: cannot read '" + path + "'");
-  }
-  std::istream& in = path == "-" ? std::cin : file;
-  const std::string name = path == "-" ? std::string("<stdin>") : path;
-
+/// Solves the points read from `in` (`name` names it in messages), and hands each
+/// result line to `emit` in input order: the fields of `viscor cor --json` plus
+/// "line", or "line" and "error" for a refused point. Returns the number refused.
+/// Throws invalid_parameter for input that is not a point list at all.
+inline std::size_t solve_points(std::istream& in, const std::string& name, const point_options& o,
+                                const std::function<void(const json&)>& emit) {
   std::vector<std::string> header;  // CSV columns, once read
   bool csv = false, decided = false;
   std::size_t line_number = 0, refused_count = 0;
@@ -195,14 +165,9 @@ inline std::size_t solve_points(const std::string& path, const point_options& o,
       for (auto& t : pool) t.join();
     }
     for (std::size_t i = 0; i < batch.size(); ++i) {
-      out << results[i].dump(-1, ' ', false, json::error_handler_t::replace) << '\n';
-      if (refused[i]) {
-        ++refused_count;
-        std::cerr << "viscor: error: " << name << ":" << batch[i].line << ": " << results[i]["error"].get<std::string>()
-                  << '\n';
-      }
+      emit(results[i]);
+      refused_count += refused[i];
     }
-    out << std::flush;
     batch.clear();
     batch_errors.clear();
   };
@@ -263,4 +228,22 @@ inline std::size_t solve_points(const std::string& path, const point_options& o,
   return refused_count;
 }
 
-}  // namespace viscor::cli
+/// Reads points from `path` ("-": standard input), writes one JSON line per point
+/// to `out` and names each refused point on standard error; returns the number refused.
+inline std::size_t solve_points(const std::string& path, const point_options& o, std::ostream& out) {
+  std::ifstream file;
+  if (path != "-") {
+    file.open(path);
+    if (!file) throw invalid_parameter("--points: cannot read '" + path + "'");
+  }
+  const std::string name = path == "-" ? std::string("<stdin>") : path;
+  const std::size_t refused = solve_points(path == "-" ? std::cin : file, name, o, [&](const json& result) {
+    out << result.dump(-1, ' ', false, json::error_handler_t::replace) << '\n' << std::flush;  // streamed
+    if (result.contains("error"))
+      std::cerr << "viscor: error: " << name << ":" << result["line"].get<std::size_t>() << ": "
+                << result["error"].get<std::string>() << '\n';
+  });
+  return refused;
+}
+
+}  // namespace viscor::jobs

@@ -1,0 +1,37 @@
+// Damping entries for a LAMMPS deck from a measured coefficient of restitution, as
+// `viscor dem lammps --damping tsuji ...` computes them: 2 mm glass beads on a
+// rigid wall, e = 0.8 measured at 0.5 m/s under gravity. The calibration solves
+// the impact with the law LAMMPS integrates (Hertz with Tsuji's damping), so the
+// deck reproduces e = 0.8 where LAMMPS's own e-to-damping conversion misses.
+#include <viscor/viscor.hpp>
+
+#include <iostream>
+
+int main() {
+  using Real = double;
+  namespace dem = viscor::dem;
+  const dem::dem_model& model = dem::find_dem_model("lammps", "tsuji");
+  dem::dem_impact<Real> impact;
+  impact.bead.youngs_modulus = 70e9;  // Pa
+  impact.bead.poisson_ratio = 0.22;
+  impact.bead.radius = 1e-3;     // m
+  impact.bead.density = 2500;    // kg/m^3
+  impact.bead.validate();
+  impact.kind = dem::contact_kind::wall;
+  impact.v0 = 0.5;        // m/s
+  impact.gravity = 9.81;  // m/s^2, towards the wall
+  const Real target_e = 0.8;
+
+  const dem::dem_deck<Real> deck = dem::dem_deck_for(model, impact, target_e);
+  dem::deck_strings entries;
+  entries.youngs_modulus = viscor::to_decimal_string(deck.youngs_modulus);
+  entries.poisson_ratio = viscor::to_decimal_string(deck.poisson_ratio);
+  entries.damping = viscor::to_decimal_string(deck.damping);
+  const dem::drop_timing<Real> timing = dem::drop_timing_for(model, impact, deck);
+  std::cout << dem::deck_snippet(model, impact.kind, entries)
+            << "# contact time " << timing.contact_time << " s; time step T/" << timing.steps_per_time_scale << " = "
+            << timing.time_step << " s\n";
+  if (deck.builtin_e)
+    std::cout << "# writing e = 0.8 into LAMMPS's own conversion would give e = " << *deck.builtin_e << "\n";
+  return deck.damping > 0 && timing.time_step > 0 ? 0 : 1;
+}
