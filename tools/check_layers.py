@@ -22,7 +22,7 @@ ALLOWED = {
     "approx": {"core"},  # never the solvers the approximations are tested against
     "tables": {"core", "exact", "ode", "impact", "certify", "approx"},
     # scenes and surrogate sit side by side and never include each other: evaluate takes a
-    # surrogate through core/fast_cor.hpp (docs/architecture.md, issue 14).
+    # surrogate through core/fast_cor.hpp (docs/architecture.md).
     "scenes": {"core", "exact", "ode", "impact", "certify", "approx", "tables"},
     "surrogate": {"core", "exact", "ode", "impact", "certify", "approx", "tables"},
     "dem": {"core", "exact", "ode", "impact", "certify", "approx", "tables", "scenes", "surrogate"},

@@ -41,6 +41,7 @@
 #include <viscor/dem/builtin_conversions.hpp>
 #include <viscor/dem/deck_convention.hpp>
 #include <viscor/dem/deck_snippet.hpp>
+#include <viscor/dem/drop_deck.hpp>
 #include <viscor/dem/dem_calibration.hpp>
 #include <viscor/dem/dem_model.hpp>
 #include <viscor/dem/hertz_contact.hpp>
@@ -66,6 +67,7 @@
 #include <viscor/jobs/data_directory.hpp>
 #include <viscor/jobs/point_batch.hpp>
 #include <viscor/jobs/scene_file.hpp>
+#include <viscor/jobs/scene_job.hpp>
 #include <viscor/jobs/surrogate_files.hpp>
 #include <viscor/jobs/table_jobs.hpp>
 #if defined(VISCOR_WITH_ENCLOSE)

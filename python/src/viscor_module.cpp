@@ -11,6 +11,7 @@
 #include "cli_common.hpp"
 #include "command_registry.hpp"
 #include <viscor/jobs/cor_job.hpp>
+#include <viscor/jobs/point_batch.hpp>
 #include <viscor/jobs/scene_job.hpp>
 #include <viscor/jobs/table_jobs.hpp>
 #include <viscor/jobs/unit_checks.hpp>
@@ -32,6 +33,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <fstream>
 #include <iostream>
 #include <mutex>
 #include <optional>
@@ -445,6 +447,42 @@ PYBIND11_MODULE(_viscor, m) {
       py::arg("path"), py::arg("error_maps"), py::arg("output"),
       "The scene job (jobs/scene_job.hpp): its JSON object as a dict, or with `output` the file written (CSV, or "
       "JSON when it ends in .json) and None.");
+
+  m.def(
+      "solve_points",
+      [](const std::string& source, bool from_file, int digits, unsigned threads, const std::string& method,
+         const std::string& tolerance, long long max_steps) {
+        viscor::jobs::point_options o;
+        o.method = viscor::jobs::parse_integration_method(method, "method");
+        o.tolerance = tolerance;
+        if (max_steps < 0) throw viscor::invalid_parameter("max_steps must be >= 1, got " + std::to_string(max_steps));
+        if (max_steps > 0) o.max_steps = static_cast<std::size_t>(max_steps);
+        o.default_digits = digits;
+        if (threads < 1 || threads > 4096)
+          throw viscor::invalid_parameter("threads must be from 1 to 4096, got " + std::to_string(threads));
+        o.threads = threads;
+        std::vector<viscor::jobs::json> results;
+        {
+          py::gil_scoped_release release;
+          std::ifstream file;
+          std::istringstream text;
+          if (from_file) {
+            file.open(source);
+            if (!file) throw viscor::invalid_parameter("points: cannot read '" + source + "'");
+          } else {
+            text.str(source);
+          }
+          std::istream& in = from_file ? static_cast<std::istream&>(file) : text;
+          viscor::jobs::solve_points(in, from_file ? source : std::string("<points>"), o,
+                                     [&](const viscor::jobs::json& r) { results.push_back(r); });
+        }
+        py::list out;
+        for (const auto& r : results) out.append(vp::to_python(r));
+        return out;
+      },
+      py::arg("source"), py::arg("from_file"), py::arg("digits"), py::arg("threads"), py::arg("method"),
+      py::arg("tolerance"), py::arg("max_steps"),
+      "A batch of points (jobs/point_batch.hpp): one dict per point, as `viscor cor --points` prints them.");
 
   m.def("run", &vp::run, py::arg("args"),
         "Runs `viscor ARGS...` in-process and returns what it prints; raises on errors.");

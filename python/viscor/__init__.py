@@ -20,7 +20,8 @@ from ._viscor import (CertificationError, ConvergenceError, Error, InvalidParame
 from ._inputs import NAMED_LAWS, check_digits as _check_digits, law_texts as _law_texts, number_text as _text
 from ._result import Result
 from ._table import Table
-from ._commands import approx, calibrate, dem, exact, run_cli, scale, scene, table, read_table, find_surrogate
+from ._commands import (Points, approx, calibrate, cor_points, dem, exact, run_cli, scale, scene, table, read_table,
+                        find_surrogate)
 from ._evaluate import EVALUATION_METHODS, Evaluation, evaluate
 
 try:  # written by cmake --install: the installed data directory (the build tree's module reads reference_data/)
@@ -34,7 +35,7 @@ __version__ = _viscor.version
 git_commit = _viscor.git_commit
 max_working_digits = _viscor.max_working_digits
 
-__all__ = ["cor", "exact", "approx", "calibrate", "scale", "table", "read_table", "scene", "dem", "evaluate",
+__all__ = ["cor", "cor_points", "Points", "exact", "approx", "calibrate", "scale", "table", "read_table", "scene", "dem", "evaluate",
            "Evaluation", "EVALUATION_METHODS", "Surrogate", "find_surrogate", "run_cli", "Result", "Table", "NAMED_LAWS",
            "Error", "InvalidParameter", "PrecisionUnavailable", "ParseError", "ConvergenceError",
            "CertificationError", "data_directory"]

@@ -12,6 +12,7 @@ import json
 import os
 
 from . import _viscor
+from ._viscor import InvalidParameter
 from ._inputs import check_digits, law_texts, number_text
 from ._result import Result
 from ._table import Table
@@ -168,3 +169,46 @@ def find_surrogate(law):
     $VISCOR_SURROGATE_DIR, else <data directory>/surrogates/<law>.surrogate."""
     path = os.path.join(surrogate_directory(), f"{law}.surrogate")
     return _viscor.Surrogate(path) if os.path.exists(path) else None
+
+
+class Points(list):
+    """The results of cor_points: a list of Result (one per point, in input order;
+    a refused point has ``line`` and ``error``), with columns across the points."""
+
+    def strings(self, name):
+        """Field `name` of every point as its exact decimal string (None where absent)."""
+        return [r.get(name) for r in self]
+
+    def column(self, name):
+        """Field `name` of every point as a NumPy float64 array (NaN where absent)."""
+        import numpy
+        return numpy.array([float(v) if v not in (None, "") else float("nan") for v in self.strings(name)],
+                           dtype=numpy.float64)
+
+
+def cor_points(points, digits=15, *, threads=1, method="taylor", tolerance="0", max_steps=None):
+    """Many impacts in one call (the point-batch job, as ``viscor cor --points``).
+
+    points: a file's path (CSV with a header, or JSON lines: docs/cli.md), or a list
+    of dicts with law (or alpha and beta), gamma, g and optionally digits. Returns
+    Points: one Result per point with the fields of ``viscor cor --json`` plus
+    ``line``; a refused point has ``line`` and ``error`` instead (the others are
+    still solved)."""
+    if isinstance(points, (str, os.PathLike)):
+        source, from_file = os.fspath(points), True
+    else:
+        lines = []
+        for p in points:
+            if not isinstance(p, dict):
+                raise TypeError(f"cor_points takes a path or a list of dicts, got an item {p!r}")
+            lines.append(json.dumps({k: v if isinstance(v, str) else number_text(v, k) for k, v in p.items()}))
+        source, from_file = "\n".join(lines) + "\n", False
+    if max_steps is None:
+        max_steps = 0
+    elif isinstance(max_steps, bool) or not isinstance(max_steps, int) or max_steps < 1:
+        raise InvalidParameter(f"max_steps must be a whole number >= 1, got {max_steps!r}")
+    if isinstance(threads, bool) or not isinstance(threads, int):
+        raise TypeError(f"threads must be a whole number, got {threads!r}")
+    results = _viscor.solve_points(source, from_file, check_digits(digits), threads, method,
+                                   number_text(tolerance, "tolerance"), max_steps)
+    return Points(Result(r) for r in results)

@@ -1,4 +1,4 @@
-// The physical inputs of every subcommand, one vocabulary (issue 13):
+// The physical inputs of every subcommand, one vocabulary:
 //   --m (kg) --k (N/m^alpha) --v0 (m/s) --gamma0 (SI) --gravity (m/s^2) --force (N),
 // or the bead as a material (Hertz, alpha = 3/2):
 //   --youngs-modulus (Pa) --poisson-ratio --radius (m) --density (kg/m^3).

@@ -114,6 +114,79 @@ class Table(unittest.TestCase):
             self.assertFalse(os.path.exists(os.path.join(tmp, "t.csv")))
 
 
+@unittest.skipUnless(CLI, "VISCOR_CLI not set")
+class TableJobSameAsTheCli(unittest.TestCase):
+    """viscor.table calls the library's table job: the same bytes as `viscor table`."""
+
+    SPEC = {"laws": ["linear", "tsuji"], "gamma": [0, 0.05, {"from": 0.1, "to": 0.3, "count": 3}], "g": [0, 0.5],
+            "digits": 20}
+
+    def cli_table(self, tmp, spec):
+        path = os.path.join(tmp, "spec.json")
+        with open(path, "w") as f:
+            json.dump(spec, f)
+        out = os.path.join(tmp, "cli.csv")
+        subprocess.run([CLI, "table", path, "-o", out, "--quiet"], check=True)
+        with open(out, "rb") as f:
+            return f.read()
+
+    def test_dict_spec_and_columns(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            t = viscor.table(self.SPEC, os.path.join(tmp, "py.csv"), threads=2)
+            self.assertIsInstance(t, str)
+            self.assertEqual(t, os.path.join(tmp, "py.csv"))
+            with open(t, "rb") as f:
+                self.assertEqual(f.read(), self.cli_table(tmp, self.SPEC))
+            self.assertEqual(t.rows, 20)
+            e = t.column("e")
+            self.assertEqual(e.dtype, np.float64)
+            self.assertEqual(list(e), [float(x) for x in t.strings("e")])
+            self.assertEqual(t.column("law")[:1], ["linear"])
+            self.assertEqual(t.sidecar["rows_total"], 20)
+
+    def test_interrupted_then_resumed(self):
+        import _thread
+        import threading
+        spec = dict(self.SPEC, digits=34, gamma=[{"from": 0, "to": 1, "count": 11}])
+        with tempfile.TemporaryDirectory() as tmp:
+            out = os.path.join(tmp, "py.csv")
+            timer = threading.Timer(0.5, _thread.interrupt_main)
+            timer.start()
+            try:
+                with self.assertRaises(KeyboardInterrupt) as caught:
+                    viscor.table(spec, out, threads=1)
+            finally:
+                timer.cancel()
+            self.assertIn("--resume", str(caught.exception))
+            self.assertTrue(os.path.exists(out + ".partial"))
+            self.assertFalse(os.path.exists(out))
+            t = viscor.table(spec, out, threads=2, resume=True)
+            self.assertGreater(t.sidecar["rows_from_earlier_sessions"], 0)
+            with open(out, "rb") as f:
+                self.assertEqual(f.read(), self.cli_table(tmp, spec))
+
+
+@unittest.skipUnless(CLI, "VISCOR_CLI not set")
+class PointsSameAsTheCli(unittest.TestCase):
+    def test_points(self):
+        points = [{"law": "tsuji", "gamma": "0.1", "g": "0.5"}, {"alpha": "3/2", "beta": "1", "gamma": 0.25},
+                  {"law": "linear", "gamma": "-1"}, {"law": "hunt_crossley", "gamma": "0.3", "g": "1", "digits": 30}]
+        r = viscor.cor_points(points, digits=20, threads=2)
+        text = "".join(json.dumps(p) + "\n" for p in points)
+        cli = subprocess.run([CLI, "cor", "--points", "-", "--digits", "20"], input=text, capture_output=True,
+                             text=True)
+        self.assertEqual(cli.returncode, 2)
+        lines = [json.loads(line) for line in cli.stdout.splitlines()]
+        self.assertEqual(len(r), len(lines))
+        for mine, theirs in zip(r, lines):
+            mine, theirs = mine.to_dict(), dict(theirs)
+            mine.pop("seconds", None), theirs.pop("seconds", None)
+            self.assertEqual(mine, theirs)
+        self.assertIn("error", r[2])
+        self.assertTrue(math.isnan(r.column("e")[2]))
+        self.assertEqual(r.strings("e")[0], lines[0]["e"])
+
+
 class Scene(unittest.TestCase):
     def test_steel_bead(self):
         path = os.path.join(SOURCE_DIR, "docs", "examples", "steel_bead.json")

@@ -1,4 +1,5 @@
-// viscor cor --points FILE|-: many impacts from one process. Each input line is a
+// A batch of points (`viscor cor --points FILE|-`, viscor::jobs::solve_points):
+// many impacts from one process. Each input line is a
 // point, CSV (first line a header naming the columns) or JSON lines, with the law
 // (`law`, or `alpha` and `beta`), `gamma`, `g` and optionally `digits`; each output
 // line is one JSON object with the same fields as `viscor cor --json`, plus `line`
@@ -27,10 +28,12 @@
 
 namespace viscor::jobs {
 
+/// How a batch of points is solved: the integrator, its tolerance and step budget,
+/// the digits of a point that gives none, and the worker threads.
 struct point_options {
   integration_method method = integration_method::taylor;
   std::string tolerance = "0";
-  std::size_t max_steps = 0;
+  std::size_t max_steps = solve_options<double>{}.max_steps;  ///< the library's default budget
   int default_digits = 15;
   unsigned threads = 1;
 };
@@ -67,7 +70,7 @@ inline std::string* point_field(point_text& p, const std::string& name) {
 
 constexpr const char* point_fields = "law, alpha, beta, gamma, g, digits";
 
-/// Reads one JSON-lines point; numbers keep their exact text (spec_json's reader).
+/// Reads one JSON-lines point; numbers keep their exact text (table_spec.hpp's reader).
 class point_reader : public node_reader {
  public:
   using node_reader::node_reader;

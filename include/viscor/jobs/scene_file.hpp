@@ -1,5 +1,5 @@
 // Reading a scene (scene.hpp) from JSON; the format is documented in docs/scenes.md.
-// Numbers keep their source text (the SAX tree of spec_json.hpp), so "0.1" is the
+// Numbers keep their source text (the SAX tree of table_spec.hpp), so "0.1" is the
 // exact decimal 0.1 at any precision; errors name file, line and field.
 #pragma once
 

@@ -18,6 +18,8 @@
 
 namespace viscor::jobs {
 
+/// The directory of the committed surrogates: $VISCOR_SURROGATE_DIR, else
+/// <data directory>/surrogates.
 inline std::string surrogate_directory() {
   if (const char* dir = std::getenv("VISCOR_SURROGATE_DIR"); dir && *dir) return dir;
   return data_directory() + "/surrogates";

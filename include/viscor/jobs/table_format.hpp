@@ -1,12 +1,12 @@
-// Tables of method "proven" (issue 17; docs/tables.md): a CoR table whose rows
+// Tables of method "proven" (docs/tables.md): a CoR table whose rows
 // carry, after the certified columns, those of a proof by viscor::enclose:
 //   ...,digits,method,e_lower,e_upper,one_minus_e_lower,one_minus_e_upper,proven_digits,outcome_proven
 // This header is the file format only (the columns, their reader, and the choice
 // between the formats in table_format); it needs no Arb, so `table merge` reads
 // proven tables in any build. The rows are computed in proven_rows.hpp.
 //
-// NOTE: a CLI layer on purpose: include/viscor/tables/ may not depend on the
-// proofs (tools/check_layers.py), and the library's CoR format stays as it is.
+// NOTE: in jobs/ on purpose: include/viscor/tables/ may not depend on the proofs
+// (tools/check_layers.py), and the plain CoR format stays as it is.
 #pragma once
 
 #include <viscor/jobs/json_fields.hpp>

@@ -46,7 +46,7 @@ namespace viscor::jobs {
 /// What to compute and where to put it.
 struct table_job {
   table_kind kind = table_kind::cor;
-  /// The rows carry the proof's columns (method "proven", proven_table.hpp); compute_line adds them.
+  /// The rows carry the proof's columns (method "proven", table_format.hpp); compute_line adds them.
   bool proven = false;
   std::string output;                   ///< OUT.csv
   std::vector<std::int64_t> indices;    ///< grid indices of the rows of this run (its shard), ascending

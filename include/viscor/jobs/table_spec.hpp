@@ -7,9 +7,9 @@
 // number, so "gamma": 0.1 is the exact decimal 0.1. Lines are tracked with a
 // counting iterator under the parser (nlohmann 3.11 keeps no positions).
 //
-// "method": "proven" is a method of the CLI only (certified rows plus the columns
-// of a proof, src/cli/proven_table.hpp): include/viscor/tables/ may not depend on
-// the proofs, so grid_spec holds method certify and table_spec says "proven".
+// "method": "proven" is a method of the jobs (certified rows plus the columns of a
+// proof, table_format.hpp): include/viscor/tables/ may not depend on the proofs,
+// so grid_spec holds method certify and table_spec says "proven".
 #pragma once
 
 #include <viscor/jobs/json_fields.hpp>
@@ -213,10 +213,10 @@ class node_reader {
 
 }  // namespace detail
 
-/// A table spec as the CLI reads it: the grid, and whether its method is "proven".
+/// A table spec as read from its file: the grid, and whether its method is "proven".
 struct table_spec {
   grid_spec grid;       ///< with method certify when `proven`
-  bool proven = false;  ///< "method": "proven": each row certified, then proven (proven_table.hpp)
+  bool proven = false;  ///< "method": "proven": each row certified, then proven (table_format.hpp)
   std::string method_where;  ///< where "method" was given ("spec.json:7"), for errors
 };
 

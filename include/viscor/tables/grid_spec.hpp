@@ -3,7 +3,7 @@
 // precision and the method. The spec expands into grid points in one fixed
 // order, so a table, its shards and a resumed run all agree on row numbers.
 //
-// Reading a spec from a file is the CLI's business (src/cli/spec_json.hpp); this
+// Reading a spec from a file is the jobs' business (jobs/table_spec.hpp); this
 // header is free of any file format. Every value is kept as an exact decimal.
 #pragma once
 
