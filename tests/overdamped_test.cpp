@@ -1,8 +1,8 @@
-// Issue 18 item 8 (overdamped extremes), the part that is fixed: under a load g > 0
-// with strong damping the bead is pushed in at its terminal speed and creeps up to
-// the equilibrium u* = g^(1/alpha) without ever turning back. Both methods prove it
-// by the trapping sector below u* while still compressing (before, the steps, bounded
-// by the fast damping scale, exhausted the budget: linear law, gamma = 1e4, g = 1e6).
+// The overdamped extremes, default-suite samples: under a load g > 0 with strong
+// damping the bead is pushed in at its terminal speed and creeps up to the
+// equilibrium u* = g^(1/alpha) without ever turning back. Both methods prove it by the
+// trapping sector below u* while still compressing (steps bounded by the fast damping
+// scale would exhaust any budget: linear law, gamma = 1e4, g = 1e6 needs over 1e6).
 // Where it is not a creep (a real turn back: Hunt-Crossley at gamma = 1e2, g = 1e-3)
 // the stick must still be found and agreed on; where it is pressed past u* and
 // creeps back down to it, the trapping sector above u* proves the stick. Truth: the linear law's closed form;
@@ -39,9 +39,9 @@ TEST(overdamped, creep_up_to_the_equilibrium_is_a_proven_stick_50_digits) {
 TEST(overdamped, pressed_past_the_equilibrium_creeps_back_a_proven_stick) {
   // Maximal compression above u* (the bead arrives faster than it creeps), then a creep
   // back down to u* on the slow manifold, inside the trapping sector from the start.
-  // The adaptive method was `undecided` at each of these (its GBS steps could not
-  // follow the creep, and E > 0 still bounded e only by ~1e-2); the trapping sector
-  // after maximal compression proves the stick. The Taylor solver proves it on its own.
+  // The adaptive method's GBS steps cannot follow that creep, and E > 0 bounds e only by
+  // ~1e-2: without the trapping sector after maximal compression it would say
+  // `undecided`. The Taylor solver proves the stick on its own.
   using viscor::test::check_overdamped_point;
   for (const char* gamma : {"1e3", "1e4"})
     EXPECT_EQ(check_overdamped_point<double>("hunt_crossley", gamma, "1e-3", 1e-8), impact_outcome::stick);
