@@ -250,7 +250,7 @@ TEST(ProvenImpact, ProvesSticksAtZeroLoad) {
     EXPECT_EQ(outside_count(sticks, digits, {}, &first), 0) << digits << " digits: " << first;
   }
   // Kuwabara-Kono (alpha + 1 < 2 beta) has no trap: at large gamma it is a rebound
-  // with e ~ gamma^-5 (docs/performance.md); the proof never calls it a stick.
+  // with e ~ gamma^-5 (docs/history.md, "The stiff creep"); the proof never calls it a stick.
   EXPECT_NE(prove_impact(law_by_name("kuwabara_kono"), "3", "0", 30).outcome, proven_outcome::stick);
 }
 
