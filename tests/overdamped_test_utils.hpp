@@ -32,10 +32,10 @@ inline constexpr const char* overdamped_laws[] = {"linear", "hertz_linear_dampin
 /// one-off build printing |x - y| / |y| at each comparison (not committed), run as
 /// `build/tests/overdamped_test` and `build/tests/overdamped_slow_test`. Worst measured:
 ///   double:  contact time 4.7e-14 (Hertz with linear damping, gamma = 2, g = 1, the two
-///            methods; 3.1e-14 against the closed form), u_max 1.0e-15 (u* 1.7e-16 short),
+///            methods; 3.1e-14 against the closed form), u_max 1.0e-15 (at most 1.7e-16 below u*),
 ///            e 6.5e-16 against the closed form;
 ///   mpfr_50: contact time 2.9e-49 (the same point; 3.0e-50 against the closed form),
-///            u_max 2.5e-50 (u* 2.5e-50 short), e 1.9e-50 against the closed form.
+///            u_max 2.5e-50 (at most 2.5e-50 below u*), e 1.9e-50 against the closed form.
 /// Between the two methods without a closed form, e is held to the `rel` the caller
 /// of check_creep_out states. Another scalar type needs its own measurement.
 template <class Real>
