@@ -197,7 +197,7 @@ TEST(adaptive_impact, typed_errors) {
   }
 }
 
-// Issue 18: what the adaptive method cannot decide at its working precision is the
+// What the adaptive method cannot decide at its working precision is the
 // outcome `undecided` (contact_time NaN), not a stick with an unproven infinite time.
 TEST(adaptive_impact, e_below_the_precision_at_g_zero_is_undecided) {
   // Linear law, g = 0, gamma = 1.9999 (under-damped): the bead leaves with

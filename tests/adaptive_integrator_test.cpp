@@ -191,7 +191,7 @@ TEST(adaptive_integrator, rejects_a_step_that_is_too_long) {
   EXPECT_EQ(t, 0);
 }
 
-// Issue 18: a non-finite state or derivative at a step's start is an error outcome
+// A non-finite state or derivative at a step's start is an error outcome
 // (no step size can cure it), not a rejection retried until the step underflows.
 TEST(adaptive_integrator, non_finite_start_is_an_error_outcome) {
   using state = std::array<double, 1>;

@@ -1,4 +1,4 @@
-// The big certification sweeps of issue 4 (label "slow"): honesty over every exact
+// The big certification sweeps (label "slow"): honesty over every exact
 // case at 50 digits and over >= 200 random points (fixed seed), and the 45-digit
 // floor at 50 digits over the whole grid of named laws.
 #include "certification_test_utils.hpp"

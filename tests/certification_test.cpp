@@ -223,7 +223,7 @@ TEST(certification, an_adaptive_run_undecided_in_double_is_repeated_at_the_refer
 }
 
 TEST(certification, the_linear_law_is_certified_by_its_closed_form_at_any_gamma_and_g) {
-  // Issue 18 item 8: over the overdamped grid, where the integrators face a stiff creep,
+  // Over the overdamped grid, where the integrators face a stiff creep,
   // the closed form certifies every point, honestly (truth: the closed form at 40 digits).
   const contact_law linear = law_by_name("linear");
   for (const char* gamma : {"2", "10", "1e4", "1e10"})

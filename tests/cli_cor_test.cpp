@@ -1,5 +1,5 @@
 // viscor cor (src/cli/cmd_cor.cpp): e as printed against the exact linear
-// solution, at double and at 210 digits (issue 3: "stick" there), and errors
+// solution, at double and at 210 digits (where a too long step once said "stick"), and errors
 // for bad input. Skipped when the CLI is not built.
 #include <viscor/exact/exact_solutions.hpp>
 
@@ -46,7 +46,7 @@ TEST(CliCor, LinearLawMatchesExactSolution) {
   }
 }
 
-// Issue 3, defect 1, through the CLI: 210 digits printed, all but the last few right.
+// The 210-digit linear law (solve_impact_test) through the CLI: 210 digits printed, all but the last few right.
 TEST(CliCor, LinearLawAt210Digits) {
   if (!cli_built()) GTEST_SKIP() << "viscor CLI not built";
   const auto r = run_cli("cor --model linear --gamma 0.05 --g 1 --digits 210 --json");
@@ -76,7 +76,7 @@ TEST(CliCor, BadInputNamesTheValue) {
   EXPECT_NE(r.err.find("nonsense"), std::string::npos) << r.err;
 }
 
-// Issue 7 through the CLI: a stuck bead's stop overlap (overdamped: creeps to u = g).
+// Through the CLI: a stuck bead's stop overlap (overdamped: creeps to u = g).
 TEST(CliCor, UndecidedOutcomeIsPrinted) {
   if (!cli_built()) GTEST_SKIP() << "viscor CLI not built";
   // Linear law, g = 0, gamma = 1.9999: e ~ 4e-137, beyond the adaptive method in double.

@@ -1,4 +1,4 @@
-// viscor cor --points: many points from one process (issue 13). Values are checked
+// viscor cor --points: many points from one process. Values are checked
 // against the closed form of the linear law (exact_solutions.hpp), at double and
 // at 50 digits; CSV and JSON lines, standard input, threads, refused lines.
 #include <viscor/exact/exact_solutions.hpp>

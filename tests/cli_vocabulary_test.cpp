@@ -1,5 +1,5 @@
-// One vocabulary for users (issue 13) and bad input that slipped through (issue
-// 18, item 10), through the CLI:
+// One vocabulary for users, and bad input that once slipped through, through the
+// CLI:
 // - every subcommand's physical mode refuses to run without --gravity (exit 2,
 //   the message names gravity);
 // - every --json output uses only the field names of docs/json-schema.md, and a
@@ -161,7 +161,7 @@ TEST(CliVocabulary, EveryJsonFieldIsInTheSchema) {
   }
 }
 
-// Issue 18 item 9: the schema's `outcome` row names every value the JSON can carry.
+// The schema's `outcome` row names every value the JSON can carry.
 TEST(CliVocabulary, SchemaListsEveryOutcome) {
   std::ifstream in(std::string(VISCOR_SOURCE_DIR) + "/docs/json-schema.md");
   ASSERT_TRUE(in) << "docs/json-schema.md";

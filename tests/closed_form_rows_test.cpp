@@ -1,4 +1,4 @@
-// Closed-form table rows (issue 18): their digits come from a check per quantity (a
+// Closed-form table rows: their digits come from a check per quantity (a
 // second evaluation at 10 more digits), not from the working precision. The truth
 // here is the closed form at 100 digits from the same exact decimal inputs (the
 // formulas themselves are checked against the solvers in exact_solutions_test).

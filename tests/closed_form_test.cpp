@@ -2,8 +2,8 @@
 // computed values, the Beta closed forms against the quadrature of integrals.hpp,
 // exact values for the linear law, and input validation.
 //
-// Reference digits: the short strings are the values of issue 5 ("computed
-// independently"); the long strings were computed with mpmath 1.3.0 at 130 digits
+// Reference digits: the short strings are reference values computed
+// independently of this code; the long strings were computed with mpmath 1.3.0 at 130 digits
 // from the Beta-function formulas, and for I(0), Q(0) checked there against mpmath's
 // own quadrature of the defining integrals (agreement to 66+ digits), e.g.
 //   C0 = b ((a+1)/2)^((b-a-1)/(a+1)) beta(b/(a+1), 3/2),  a = b = 3/2.
@@ -85,7 +85,7 @@ TYPED_TEST(ClosedForm, KuwabaraKonoConstantsMatchIndependentValues) {
 TYPED_TEST(ClosedForm, IssueValuesToTheirPrintedDigits) {
   using Real = TypeParam;
   const Real a = Real(3) / 2, b = Real(3) / 2;
-  // Values from issue 5 (computed independently), good to their last printed digit.
+  // Values computed independently of this code, good to their last printed digit.
   const Real tol = std::max(ulps<Real>(32), Real(1e-27));
   VISCOR_EXPECT_REL(viscor::coefficient_C0(a, b), constant<Real>("1.730173287142933198695851158"), tol);
   VISCOR_EXPECT_REL(viscor::coefficient_C(a, b), constant<Real>("4.403985776550287670535"), std::max(tol, Real(1e-21)));

@@ -1,4 +1,4 @@
-// viscor::enclose (include/viscor/enclose/enclose.hpp, issue 17): the
+// viscor::enclose (include/viscor/enclose/enclose.hpp): the
 // public entry point's decimal bounds of e, 1 - e, T_f and u_max contain the closed
 // forms (include/viscor/exact/, evaluated in MPFR at 2D + 20 digits: formulas, not
 // this integrator) at 30 and 50 digits, its proven digits are correctly rounded

@@ -1,5 +1,5 @@
-// The proven impact for rational exponents (include/viscor/enclose/proven_impact.hpp,
-// issue 17), checked against truths it does not share:
+// The proven impact for rational exponents (include/viscor/enclose/proven_impact.hpp),
+// checked against truths it does not share:
 // - the closed forms (include/viscor/exact/): Tsuji and the Hunt-Crossley form at
 //   g = 0, the linear law at any g, evaluated in MPFR at 2D + 20 digits;
 // - committed certified rows of reference_data/cor_report_grid.csv (Hertz-type
@@ -87,7 +87,7 @@ TEST(ProvenImpact, ContainsTheClosedForms) {
   }
 }
 
-// Issue 17's acceptance, over a fixed-seed sample of 200 points of the closed forms that
+// The proofs' acceptance, over a fixed-seed sample of 200 points of the closed forms that
 // the general prover meets: Tsuji and the Hunt-Crossley form at g = 0 (gamma in [0, 3],
 // sticks past Tsuji's critical 4/sqrt(5) included; a band around it is left out, where
 // e < 1e-40 cannot be told from 0 at 30 digits), the linear law at g in [-0.5, 10]
@@ -157,8 +157,8 @@ TEST(ProvenImpact, UnderestimatedRemainderIsCaught) {
   EXPECT_EQ(outside_count(closed_cases, 30, coarse, &first), 0) << first;
   // The box-based remainder is pessimistic (a thousand-fold under-estimate still
   // leaves valid enclosures here, measured); a billion-fold one must be caught, and
-  // since the a priori box is no longer doubled (issue 17: a tighter remainder) a
-  // million-fold one is too (measured: 7 and 5 of the 9 cases; before, 6 and 1).
+  // with the a priori box widened by 2^-20 rather than doubled (a tighter remainder) a
+  // million-fold one is too (measured: 7 and 5 of the 9 cases).
   remainder_factor_for_tests = 1e-9;
   const int caught = outside_count(closed_cases, 30, coarse);
   remainder_factor_for_tests = 1e-6;
@@ -250,7 +250,7 @@ TEST(ProvenImpact, ProvesSticksAtZeroLoad) {
     EXPECT_EQ(outside_count(sticks, digits, {}, &first), 0) << digits << " digits: " << first;
   }
   // Kuwabara-Kono (alpha + 1 < 2 beta) has no trap: at large gamma it is a rebound
-  // with e ~ gamma^-5 (docs/performance.md); the proof never calls it a stick.
+  // with e ~ gamma^-5 (docs/history.md, "The stiff creep"); the proof never calls it a stick.
   EXPECT_NE(prove_impact(law_by_name("kuwabara_kono"), "3", "0", 30).outcome, proven_outcome::stick);
 }
 

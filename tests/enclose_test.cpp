@@ -1,4 +1,4 @@
-// Proven enclosures (issue 17, first increment: the linear law), checked against
+// Proven enclosures of the linear law, checked against
 // the closed-form solution (include/viscor/exact/exact_linear.hpp, an independent
 // formula evaluated in MPFR at twice the digits plus 20), never against the proof
 // itself:

@@ -1,4 +1,4 @@
-// The committed error maps (reference_data/error_maps/, issue 7):
+// The committed error maps (reference_data/error_maps/):
 //  - they are what `viscor errormap --table` builds from the committed certified
 //    tables today (tools/generate_error_maps.sh), so a change to an approximation
 //    or to a table that leaves a map stale fails here;

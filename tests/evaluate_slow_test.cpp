@@ -1,4 +1,4 @@
-// Acceptance (issue 7): evaluate never violates its bound over 500 random scene
+// Acceptance: evaluate never violates its bound over 500 random scene
 // points (fixed seed) with tolerances from 1e-2 to 1e-40, compared with certified
 // values (certify at 25+ digits beyond the tolerance; a reduced sample of 20 points
 // runs in the default suite, evaluate_test.cpp).

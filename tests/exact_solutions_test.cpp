@@ -1,4 +1,4 @@
-// The exact solutions of issue 2, each against an independent computation at a
+// The exact solutions (include/viscor/exact/), each against an independent computation at a
 // higher precision:
 // - linear law: the oscillator propagated by a matrix exponential (its own
 //   Taylor series with scaling and squaring), events found by scanning + Newton;
@@ -141,7 +141,7 @@ TYPED_TEST(ExactSolutions, LinearAgreesWithMatrixExponential) {
 }
 
 TYPED_TEST(ExactSolutions, LinearCreepingOutKeepsTheRelativeDigitsOfE) {
-  // Issue 18 item 8: strongly overdamped under a pull g < 0 the bead creeps out with
+  // Strongly overdamped under a pull g < 0 the bead creeps out with
   // e ~ |g|/gamma; u' = C + (g - xi) S cancelled to about |g|/gamma relative (3 digits
   // of e in double at gamma = 1e10, g = -1), the root form keeps them.
   using Real = TypeParam;

@@ -1,4 +1,4 @@
-// Issue 18: contact-law exponents are validated exactly, as the rational or decimal
+// Contact-law exponents are validated exactly, as the rational or decimal
 // they were read as. 0.99999999999999999999999 is below 1 although it rounds to 1 in
 // long double (where it used to be compared).
 #include "test_utils.hpp"

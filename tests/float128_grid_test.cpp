@@ -1,4 +1,4 @@
-// float128 end to end (issue 18): over the Hertz-type laws under load, gamma from
+// float128 end to end: over the Hertz-type laws under load, gamma from
 // 1e-320 to 1 and g from -0.5 to 1e6, every float128 solve is compared with the
 // adaptive (GBS) method at 50 digits, which shares no code with the Taylor solver or
 // its double tail. Digits are measured per quantity (e, 1 - e, T_f, u_max), and no

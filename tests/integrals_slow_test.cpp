@@ -1,5 +1,5 @@
 // Heavy high-precision sweeps of integrals.hpp (label "slow"): the two independent
-// quadratures at 100 digits over the acceptance grid of issue 5, and the primary
+// quadratures at 100 digits over the acceptance grid (docs/approximations.md), and the primary
 // method up to g = 1e12 by precision escalation (50 against 100 digits).
 #include <viscor/approx/chebyshev_beta.hpp>
 #include <viscor/approx/closed_form.hpp>

@@ -1,4 +1,4 @@
-// Issue 18: one rule for decimal digits (std::numeric_limits<T>::digits10), and the
+// One rule for decimal digits (std::numeric_limits<T>::digits10), and the
 // precision choices derived from the widths of the types (docs/precision.md). The
 // static_asserts in the headers check the margins at compile time; this checks the
 // values a reader relies on.

@@ -1,4 +1,4 @@
-// The committed proven tables (issue 17 item 4): reference_data/proven/NAME.csv holds,
+// The committed proven tables: reference_data/proven/NAME.csv holds,
 // for every row of the committed certified table reference_data/NAME.csv (the report
 // grid and the other committed CoR tables), the enclosure of e and of 1 - e proven by
 // viscor::enclose (validated Taylor integration in Arb balls) and its proven outcome.
@@ -9,7 +9,7 @@
 // proven_digits >= certified digits - 2 (the issue's acceptance). The counts of
 // rows whose certified value is the correctly rounded one (within half a unit) are
 // printed; docs/proofs.md reports them. reference_data/proven/digits50/ holds the report
-// grid proven at 50 digits: the same checks, and the tightness of issue 17 (below).
+// grid proven at 50 digits: the same checks, and the tightness target (below).
 #include <viscor/core/real_io.hpp>
 #include <viscor/core/real_types.hpp>
 #include <viscor/tables/reference_table.hpp>
@@ -93,7 +93,7 @@ TEST(ProvenTablesCommitted, TheReportGridIsAmongThem) {
   EXPECT_NE(std::find(names.begin(), names.end(), "cor_report_grid.csv"), names.end());
 }
 
-// Issue 17's tightness acceptance: at 50 digits the relative width of e is at most
+// The tightness target: at 50 digits the relative width of e is at most
 // 1e-40 on the well-conditioned points of the report grid. Checked on every rebound
 // of the committed 50-digit proof of the grid with e >= 1e-10 (smaller e next to the
 // sticking threshold: an absolute width of the exit speed of ~1e-52 is a relative

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Runs every command of the README's ```sh blocks from the build tree, so the README
-# cannot drift (issue 13). `viscor` is the build tree's tool (a PATH entry), and
+# cannot drift. `viscor` is the build tree's tool (a PATH entry), and
 # `./build/viscor` too; commands run in a scratch directory that sees the repository's
 # docs/, tools/ and reference_data/. The two set-up commands are checked, not run
 # (they install and build): .ci/run must hold exactly the two, the main-job command

@@ -1,5 +1,5 @@
 // Heavy checks of solve_impact (label "slow"): 1000 digits against an exact
-// solution, the full precision-escalation grid of issue 3, and wide sweeps of
+// solution, the full precision-escalation grid, and wide sweeps of
 // laws and loads at 50 and 100 digits.
 #include <viscor/exact/exact_solutions.hpp>
 #include <viscor/impact/solve_impact.hpp>
@@ -33,7 +33,7 @@ TEST(SolveImpactSlow, ThousandDigitsAgainstExactHuntCrossley) {
   EXPECT_LE(abs(r.e - exact->e), r.error_estimate + epsilon<mpfr_real>());
 }
 
-// Issue 3: at 100 digits the result agrees with 50 digits to >= 47 digits for all
+// At 100 digits the result agrees with 50 digits to >= 47 digits for all
 // named laws at g in {0, 0.05, 1, 10}, gamma in {1e-4, 1e-2, 0.1}.
 TEST(SolveImpactSlow, PrecisionEscalationGrid) {
   for (const auto& named : named_laws)

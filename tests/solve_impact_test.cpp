@@ -331,7 +331,7 @@ TEST(SolveImpact, StepBudgetRaisesTypedError) {
   }
 }
 
-// Issue 3, defect 1: at 210 digits the linear law (gamma = 0.05, g = 1) came
+// A past defect: at 210 digits the linear law (gamma = 0.05, g = 1) came
 // out "stick": the Jorba-Zou step of an entire solution grows with the order
 // (~12 time units at 210 digits) and spanned two zeros of u'. At 300 digits a
 // wrong e was claimed to 1e-298.
@@ -374,7 +374,7 @@ Real undamped_fraction(const std::string& law, const Real& gamma) {
   return (1 - xi) * (1 + xi);
 }
 
-// Issue 3, defect 2: near critical damping (g = 0) e = exp(-pi xi/sqrt(1 - xi^2))
+// A past defect: near critical damping (g = 0) e = exp(-pi xi/sqrt(1 - xi^2))
 // is tiny: gamma = 1.99 gave e = 1.05e-8 (exact 2.56e-14) in double, 1.999 threw.
 // Wanted: e to relative precision, as far as the problem's conditioning allows
 // (ln e moves by (1 - xi^2)^(-3/2) times a relative change of the drift), with
@@ -425,7 +425,7 @@ TEST(SolveImpact, NearCriticalDampingWithLoadSticks) {
   }
 }
 
-// Issue 7: where a stuck bead stops. Turning back at u_s > 0 (u' = 0): u_s
+// Where a stuck bead stops. Turning back at u_s > 0 (u' = 0): u_s
 // from the closed form at the exact turning time; creeping: the static
 // equilibrium u^alpha = g.
 TEST(SolveImpact, StopOverlapOfAStuckBead) {

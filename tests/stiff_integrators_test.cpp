@@ -143,7 +143,7 @@ TEST(lobatto_integrator, follows_a_very_stiff_problem_with_slow_steps) {
 }
 
 #if VISCOR_HAS_MPFR
-// Issue 18 item 8: where Real is wider than long double, Newton's matrix is factored in
+// Where Real is wider than long double, Newton's matrix is factored in
 // double and only the corrections come from it (the residual stays in Real), with
 // the matrix rebuilt at the stages when Newton contracts slowly. It must reach the
 // same collocation solution as Newton with the LU in Real (the truth here: the same

@@ -117,7 +117,7 @@ TEST(TaylorTail, EndpointJetWithinTheToleranceOfTheFullPrecisionJetAtTheStepTake
   EXPECT_GT(tails, 50);
 }
 
-// Issue 18: constants outside double's normal range (gamma = 1e-320 is subnormal in
+// Constants outside double's normal range (gamma = 1e-320 is subnormal in
 // double, 1e-400 is 0 there; g likewise) must switch the tail off, since D's orders
 // are proportional to gamma and are wanted relative to D itself.
 TEST(TaylorTail, ConstantsOutsideDoublesNormalRangeSwitchTheTailOff) {
@@ -160,7 +160,7 @@ TEST(TaylorTail, ConstantsOutsideDoublesNormalRangeSwitchTheTailOff) {
   }
 }
 
-// Issue 18: at the start of contact tau = D = 0, so the step cap, which measures a
+// At the start of contact tau = D = 0, so the step cap, which measures a
 // state relative to its value, cannot see what the tail does to them: the orders
 // computed in double must then change tau(h) and D(h) by less than a quarter of the
 // tolerance relative to those values (or the tail must be off).

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Rebuilds the error maps reference_data/error_maps/<law>.csv (issue 7) from the
+# Rebuilds the error maps reference_data/error_maps/<law>.csv (docs/scenes.md) from the
 # committed certified tables: cor_error_map_grid.csv (a tensor grid, 1-2-5 steps)
 # supplies the cell corners, the other CoR tables add samples inside the cells.
 # Usage: tools/generate_error_maps.sh [path/to/viscor]

@@ -22,12 +22,12 @@ packages=(
   libcli11-dev              # command line
   nlohmann-json3-dev        # JSON output and sidecars
   python3-matplotlib        # tools/plot_reference.py figures
-  lammps liggghts           # DEM programs run by tests/dem_drop_*test.cpp (issue 15)
-  doxygen                   # API reference: cmake --build build --target doc (issue 13)
-  libflint-arb-dev          # Arb ball arithmetic: proven enclosures, include/viscor/enclose (issue 17)
-  pybind11-dev python3-dev  # Python module viscor (issue 16, docs/python.md)
+  lammps liggghts           # DEM programs run by tests/dem_drop_*test.cpp (docs/dem.md)
+  doxygen                   # API reference: cmake --build build --target doc
+  libflint-arb-dev          # Arb ball arithmetic: proven enclosures, include/viscor/enclose (docs/proofs.md)
+  pybind11-dev python3-dev  # Python module viscor (docs/python.md)
   python3-numpy python3-mpmath  # its vectorised evaluate and tests; Result.mpf
-  yade                      # DEM program run by tests/yade_drop_*test.cpp (issue 15, YADE 2023.02a)
+  yade                      # DEM program run by tests/yade_drop_*test.cpp (docs/dem.md, YADE 2023.02a)
 )
 
 case "${1:-}" in

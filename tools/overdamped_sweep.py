@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Issue 18 item 8: measure the overdamped extremes.
+"""Measure the overdamped extremes (docs/performance.md, "Overdamped extremes").
 
 Runs `viscor cor` once per point of a log grid of gamma in [2, 1e10] and g in
 [-1e6, 1e12], for every named law, both methods and the chosen precisions, each
@@ -25,7 +25,7 @@ import time
 
 LAWS = ["linear", "hertz_linear_damping", "tsuji", "kuwabara_kono", "hunt_crossley"]
 GRIDS = {
-    # gamma from 2 to 1e10, g from -1e6 to 1e12 (issue 18 item 8)
+    # gamma from 2 to 1e10, g from -1e6 to 1e12: the box the solvers must decide
     "full": (["2", "10", "1e2", "1e3", "1e4", "1e6", "1e8", "1e10"],
              ["-1e6", "-1e3", "-1", "-1e-3", "0", "1e-3", "1", "1e3", "1e6", "1e9", "1e12"]),
     "reduced": (["2", "1e2", "1e4", "1e10"], ["-1e6", "-1", "0", "1", "1e6", "1e12"]),

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Times the README's main-job command on a fresh Debian 12 system (issue 13 item 7,
-# docs/performance.md "Build time"): a minimal Debian made by debootstrap (no
+# Times the README's main-job command on a fresh Debian 12 system
+# (docs/performance.md, "On a fresh machine"): a minimal Debian made by debootstrap (no
 # compiler, no CMake, no libraries), a fresh clone of this repository in it, and the
 # command run as written, packages included. Needs root, debootstrap and network
 # access to a Debian mirror; leaves everything under WORKDIR (delete it afterwards:

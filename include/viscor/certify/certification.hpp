@@ -1,4 +1,4 @@
-// Certified digits of a CoR: agreement of independent computations (issue 4).
+// Certified digits of a CoR: agreement of independent computations.
 //
 //   1. the Taylor method (taylor_impact.hpp) at the working precision of Real;
 //   2. the Taylor method again at a higher precision (by default working + max(5,
@@ -31,7 +31,7 @@
 //
 // Where the linear law's closed form applies (alpha = beta = 1: every gamma and g,
 // exact/exact_linear.hpp) the closed form is the independent check instead of the
-// two integrators (issue 18 item 8): it is evaluated at the working precision and
+// two integrators (which face a stiff creep when overdamped): it is evaluated at the working precision and
 // at the reference precision, the values reported are the reference's, and the
 // certified digits are their agreement minus the margin. The formula's loss of
 // digits to its conditioning (about log10(g) at large g) shows in that agreement,

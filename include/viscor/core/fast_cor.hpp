@@ -1,5 +1,5 @@
 // A fast double-precision CoR with a stated accuracy, as viscor::evaluate sees it
-// (issue 14). evaluate (scenes/) uses a surrogate (surrogate/) through this small
+// (the surrogates). evaluate (scenes/) uses a surrogate (surrogate/) through this small
 // interface, so that neither layer includes the other: surrogate/surrogate_source.hpp
 // implements it for a cor_surrogate; evaluate_options::surrogate takes a pointer to it.
 #pragma once

@@ -11,7 +11,7 @@ namespace viscor {
 /// Which integrator solve_impact uses. Both end contact at zero overlap u = 0.
 enum class integration_method {
   taylor,    ///< Taylor series with endpoint-regularised variables (the default)
-  adaptive,  ///< the independent high-order adaptive method (issue 4)
+  adaptive,  ///< the independent high-order adaptive method (GBS), for certification
 };
 
 /// "taylor" or "adaptive", as in the CLI's --method.

@@ -72,7 +72,7 @@ struct linear_oscillator {
   // In the roots r1 = slow, r2 = fast (r1 r2 = 1, r1 - r2 = 2 s) the coefficients are
   //   u  = g + (1 + g r2)/(2s) e^{r1 t} - (1 + g r1)/(2s) e^{r2 t},
   //   u' = (g + r1)/(2s) e^{r1 t} - (g + r2)/(2s) e^{r2 t},
-  // each a sum of like-signed terms for g <= 0 (issue 18 item 8).
+  // each a sum of like-signed terms for g <= 0 (strongly overdamped under a pull).
   bool by_roots() const { return lambda < 0 && root_lambda >= Real(1) / 2; }
   Real u(const Real& t) const {
     using std::exp;

@@ -1,4 +1,4 @@
-// Accuracy-driven evaluation (issue 7): e at (law, gamma, g) with an empirical
+// Accuracy-driven evaluation: e at (law, gamma, g) with an empirical
 // error bound <= a requested tolerance, by the cheapest method whose bound meets it.
 //
 // The bound is EMPIRICAL, not a proof: each method's bound is a measured or

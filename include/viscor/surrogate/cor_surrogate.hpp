@@ -233,7 +233,7 @@ struct surrogate_bound {
   bool verified() const noexcept { return safety_factor > 0; }
 };
 
-/// The accuracy targets of issue 14.
+/// The accuracy targets a surrogate is built and verified against (docs/surrogate.md).
 struct surrogate_targets {
   double abs_e = 1e-12;            ///< where e >= 1e-2
   double abs_e_squared = 1e-13;    ///< everywhere

@@ -10,8 +10,8 @@
 //     is measured and reported (on AMD Zen it steps ~10 ns at a time);
 //   * the inputs are laundered through an empty asm statement after the first read
 //     and the result before the second, so the compiler can neither hoist the
-//     evaluation out of the timed region nor drop it (the earlier benchmark's
-//     per-point counters printed ~2 ns because the repeats of a point were hoisted);
+//     evaluation out of the timed region nor drop it (unlaundered, per-point counters
+//     print ~2 ns: the repeats of a point are hoisted);
 //   * the median of an empty timed region (same fences, same laundering) is
 //     subtracted from every timing;
 //   * every pass times each point once, in an order shuffled afresh for each pass

@@ -1,0 +1,3 @@
+#!/usr/bin/env bash
+# Not: shell counts and lengths.
+echo "$# ${#args[@]} $#"
