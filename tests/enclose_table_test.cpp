@@ -1,4 +1,4 @@
-// viscor table with "method": "proven" (src/cli/proven_table.hpp,
+// viscor table with "method": "proven" (include/viscor/jobs/table_format.hpp,
 // proven_rows.hpp; docs/tables.md): every row certified as method "certify" does,
 // plus the bounds, proven digits and proven outcome of viscor::enclose. Checked:
 // the linear law's enclosures contain its closed form (exact/exact_linear.hpp in

@@ -1,7 +1,7 @@
 // viscor cor: the coefficient of restitution of one impact, integrated to the
 // working precision (solve_impact, Taylor method by default). Parameters are
 // scaled (--gamma, --g) or physical (--m --k --gamma0 --v0 --gravity [--force],
-// converted by eq. (2)); or many points from a file (--points, cor_points.hpp).
+// converted by eq. (2)); or many points from a file (--points, jobs/point_batch.hpp).
 #include <viscor/jobs/certify_report.hpp>
 #include "cli_common.hpp"
 #include "command_registry.hpp"
