@@ -126,8 +126,15 @@ class exact_decimal {
     // multiply by 10 a hundred thousand times).
     if (a.sign() != b.sign()) return a.sign() <=> b.sign();
     if (a.sign() == 0) return std::strong_ordering::equal;
-    const long long la = a.leading_exponent(), lb = b.leading_exponent();
-    if (la != lb) return a.sign() > 0 ? la <=> lb : lb <=> la;
+    if (a.m_exponent == b.m_exponent)
+      return a.m_mantissa == b.m_mantissa ? std::strong_ordering::equal
+                                          : (a.m_mantissa < b.m_mantissa ? std::strong_ordering::less
+                                                                         : std::strong_ordering::greater);
+    const int gap = a.m_exponent > b.m_exponent ? a.m_exponent - b.m_exponent : b.m_exponent - a.m_exponent;
+    if (gap > 64) {  // rare: the leading digits decide unless they are at the same place
+      const long long la = a.leading_exponent(), lb = b.leading_exponent();
+      if (la != lb) return a.sign() > 0 ? la <=> lb : lb <=> la;
+    }
     const integer d = (a - b).m_mantissa;
     return d == 0 ? std::strong_ordering::equal : (d < 0 ? std::strong_ordering::less : std::strong_ordering::greater);
   }
