@@ -2,7 +2,8 @@
 // core/real_io.hpp, core/contact_law.hpp's exponent). Every number viscor reads
 // from an option or a file goes through these. Checks beyond "no crash":
 //   * exact_decimal: parse -> to_string -> parse gives the same number, and the
-//     printed text is canonical (printing it again gives the same text);
+//     printed text is canonical (printing it again gives the same text); for two
+//     numbers (two lines), a <=> b agrees with the sign of a - b;
 //   * parse_real in double and long double: the text and the exact decimal's
 //     canonical text round to the same value (or are refused alike);
 //   * exponent: parse -> to_string -> parse gives the same exponent, and a
@@ -54,6 +55,22 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       same_value<long double>(text, canonical);
     }
   });
+
+  // Two numbers (the input's first two lines): the ordering agrees with the sign of the difference.
+  const auto lines = viscor::fuzz::lines_of(text);
+  auto short_exponent = [](const std::string& t) {
+    const std::size_t e = t.find_first_of("eE");
+    return e == std::string::npos || t.size() - e <= 5;
+  };
+  if (lines.size() >= 2 && short_exponent(lines[0]) && short_exponent(lines[1]))
+    viscor::fuzz::refusal_or_result([&] {
+      const exact_decimal a = exact_decimal::parse(lines[0], "a"), b = exact_decimal::parse(lines[1], "b");
+      const int d = (a - b).sign();
+      const auto order = a <=> b;
+      fuzz_require((d < 0) == (order < 0) && (d == 0) == (order == 0) && (d > 0) == (order > 0),
+                   "a <=> b disagrees with the sign of a - b: '" + lines[0] + "', '" + lines[1] + "'");
+      fuzz_require(((b <=> a) < 0) == (order > 0), "b <=> a is not the reverse of a <=> b");
+    });
 
   viscor::fuzz::refusal_or_result([&] {
     const viscor::exponent e = viscor::exponent::parse(text, "alpha");
