@@ -32,6 +32,19 @@ void require_positive(const Real& x, const std::string& name) {
   if (!(x > 0)) throw invalid_parameter("parameter " + name + " must be > 0, got " + to_decimal_string(x));
 }
 
+/// Throws invalid_parameter unless `x`, a quantity computed from valid inputs (`from`
+/// names them), is finite and > 0 and, in double and long double, not subnormal:
+/// inputs of extreme size can overflow or underflow the working precision there,
+/// and a mass or stiffness of 0 or inf must not be passed on as if it were given.
+template <class Real>
+void require_representable_positive(const Real& x, const std::string& name, const std::string& from) {
+  using boost::math::isfinite;
+  if (!isfinite(x) || !(x > 0) || detail::underflowed(x))
+    throw invalid_parameter(name + " = " + to_decimal_string(x) + ", computed from " + from +
+                            ", is outside the range of the working precision (it overflows or underflows): "
+                            "give inputs of a more moderate size, or ask for more digits");
+}
+
 /// Throws invalid_parameter unless the gravitational acceleration is finite and >= 0.
 /// viscor's sign convention is "towards the wall is positive": some DEM codes write
 /// gravity as -9.81 along z, and taking that sign here would silently turn the load

@@ -65,13 +65,30 @@ Real load_factor(const contact_law& law, const Real& m, const Real& k, const Rea
 /// Physical -> scaled (eq. 2).
 template <class Real>
 scaled_parameters<Real> to_scaled(const contact_law& law, const physical_parameters<Real>& p) {
+  using std::abs;
   law.validate();
   p.validate();
+  // Inputs of extreme size can leave the working precision's range here (k / m
+  // overflows for k = 1e3, m = 1e-307 in double): refused, naming the inputs, not
+  // passed on as inf, NaN (0 * inf) or a damping or load lost to underflow.
+  const std::string from = "m = " + to_decimal_string(p.m) + ", k = " + to_decimal_string(p.k) +
+                           ", v0 = " + to_decimal_string(p.v0);
+  const Real damping = detail::damping_factor(law, p.m, p.k, p.v0), load = detail::load_factor(law, p.m, p.k, p.v0);
+  require_representable_positive(damping, "the damping scale gamma / gamma0", from);
+  require_representable_positive(load, "the load scale g / (gravity + F/m)", from);
   scaled_parameters<Real> s;
-  s.gamma = p.gamma0 * detail::damping_factor(law, p.m, p.k, p.v0);
-  s.g = detail::load_factor(law, p.m, p.k, p.v0) * (p.gravity + p.force / p.m);
+  s.gamma = p.gamma0 * damping;
+  const Real acceleration = p.gravity + p.force / p.m;
+  s.g = load * acceleration;
   s.time_scale = detail::time_scale(law, p.m, p.k, p.v0);
   s.length_scale = p.v0 * s.time_scale;
+  require_representable_positive(s.time_scale, "the time scale T", from);
+  require_representable_positive(s.length_scale, "the length scale v0 T", from);
+  if (p.gamma0 > 0)
+    require_representable_positive(s.gamma, "the scaled damping gamma", from + ", gamma0 = " + to_decimal_string(p.gamma0));
+  if (acceleration != 0)
+    require_representable_positive(Real(abs(s.g)), "the scaled load |g|",
+                                   from + ", gravity = " + to_decimal_string(p.gravity) + ", F = " + to_decimal_string(p.force));
   return s;
 }
 

@@ -52,6 +52,10 @@ hertz_contact<Real> model_contact(const dem_model& model, const dem_impact<Real>
   c.effective_radius = wall ? impact.bead.radius : Real(impact.bead.radius / 2);
   c.effective_mass = wall ? c.bead_mass : Real(c.bead_mass / 2);
   c.stiffness = impact.stiffness;  // F = k delta + damping; effective_modulus stays 0 (no Hertz modulus)
+  const std::string from =
+      "radius = " + to_decimal_string(impact.bead.radius) + ", density = " + to_decimal_string(impact.bead.density);
+  require_representable_positive(c.effective_mass, "the bead's mass", from);
+  require_representable_positive(c.effective_radius, "the effective radius", from);
   return c;
 }
 

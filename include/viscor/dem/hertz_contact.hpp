@@ -81,6 +81,12 @@ hertz_contact<Real> make_hertz_contact(const bead_material<Real>& bead, contact_
   c.effective_radius = wall ? bead.radius : Real(bead.radius / 2);
   c.effective_mass = wall ? c.bead_mass : Real(c.bead_mass / 2);
   c.stiffness = 4 * c.effective_modulus * sqrt(c.effective_radius) / 3;
+  const std::string from = "radius = " + to_decimal_string(bead.radius) + ", density = " +
+                           to_decimal_string(bead.density) + ", youngs_modulus = " +
+                           to_decimal_string(bead.youngs_modulus);
+  require_representable_positive(c.effective_mass, "the bead's mass", from);
+  require_representable_positive(c.effective_radius, "the effective radius", from);
+  require_representable_positive(c.stiffness, "the Hertz stiffness k", from);
   return c;
 }
 

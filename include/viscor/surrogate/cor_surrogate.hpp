@@ -30,6 +30,8 @@
 #include <cstdint>
 #include <cstdio>
 #include <fstream>
+#include <initializer_list>
+#include <istream>
 #include <iomanip>
 #include <limits>
 #include <sstream>
@@ -492,17 +494,35 @@ inline patch_tree read_tree(reader& r, const std::string& name) {
   const auto nodes = r.next<std::size_t>("node count"), patches = r.next<std::size_t>("patch count");
   if (t.order < 2 || t.order > 64 || nodes < 1 || nodes > 100'000'000 || patches > nodes)
     throw parse_error(r.file + ": surrogate file: bad sizes in " + name);
+  if (!std::isfinite(t.x0) || !std::isfinite(t.x1) || !std::isfinite(t.y0) || !std::isfinite(t.y1) ||
+      !(t.x0 < t.x1) || !(t.y0 < t.y1))
+    throw parse_error(r.file + ": surrogate file: bad box in " + name);
+  // A tree as the fit writes it: each node's children come after it, every node
+  // but the root is the child of exactly one node and every patch belongs to
+  // exactly one leaf. Anything else (a cycle, a shared subtree) would make the
+  // walk down the tree loop or the index grow without bound.
   t.nodes.resize(nodes);
-  for (auto& n : t.nodes) {
+  std::vector<char> node_used(nodes, 0), patch_used(patches, 0);
+  for (std::size_t k = 0; k < nodes; ++k) {
+    auto& n = t.nodes[k];
     n.dim = r.next<std::int32_t>("node"), n.child = r.next<std::int32_t>("node"), n.split = r.next<double>("node");
-    const bool ok = n.dim == 2 ? (n.child >= 0 && static_cast<std::size_t>(n.child) < patches)
-                               : (n.dim >= 0 && n.dim < 2 && n.child > 0 && static_cast<std::size_t>(n.child) + 1 < nodes);
-    if (!ok) throw parse_error(r.file + ": surrogate file: bad node in " + name);
+    bool ok = n.dim == 2 ? (n.child >= 0 && static_cast<std::size_t>(n.child) < patches)
+                         : (n.dim >= 0 && n.dim < 2 && n.child > 0 && static_cast<std::size_t>(n.child) > k &&
+                            static_cast<std::size_t>(n.child) + 1 < nodes && std::isfinite(n.split));
+    if (ok && n.dim == 2) ok = !patch_used[static_cast<std::size_t>(n.child)]++;
+    if (ok && n.dim != 2)
+      ok = !node_used[static_cast<std::size_t>(n.child)]++ && !node_used[static_cast<std::size_t>(n.child) + 1]++;
+    if (!ok) throw parse_error(r.file + ": surrogate file: bad node " + std::to_string(k) + " in " + name);
   }
+  if (std::count(node_used.begin() + 1, node_used.end(), 0) != 0 || std::count(patch_used.begin(), patch_used.end(), 0) != 0)
+    throw parse_error(r.file + ": surrogate file: nodes or patches outside the tree in " + name);
   t.patches.resize(patches);
-  for (auto& p : t.patches)
+  for (auto& p : t.patches) {
     p.cx = r.next<double>("patch"), p.sx = r.next<double>("patch"), p.cy = r.next<double>("patch"),
     p.sy = r.next<double>("patch");
+    if (!std::isfinite(p.cx) || !std::isfinite(p.sx) || !std::isfinite(p.cy) || !std::isfinite(p.sy))
+      throw parse_error(r.file + ": surrogate file: bad patch in " + name);
+  }
   const std::size_t n = static_cast<std::size_t>(t.order);
   std::vector<double> by_rows(n * n);  // the file's order, one patch at a time
   std::vector<patch_tree::patch> maps;
@@ -539,10 +559,9 @@ inline void write_cor_surrogate(std::ostream& out, const cor_surrogate& s) {
   out << "end\n";
 }
 
-/// Reads a surrogate written by write_cor_surrogate; throws parse_error naming the file.
-inline cor_surrogate read_cor_surrogate(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw invalid_parameter("cannot open surrogate file '" + path + "'");
+/// Reads a surrogate written by write_cor_surrogate from `in`; `path` names it in
+/// errors. Throws parse_error naming it.
+inline cor_surrogate read_cor_surrogate(std::istream& in, const std::string& path) {
   detail::reader r{in, path};
   cor_surrogate s;
   r.expect("viscor-cor-surrogate");
@@ -566,14 +585,35 @@ inline cor_surrogate read_cor_surrogate(const std::string& path) {
   if (!std::isfinite(s.threshold_power)) throw parse_error(path + ": surrogate file: bad threshold power");
   if (s.log_gamma_c.order < 2 || s.log_gamma_c.order > 64 || breaks < 2 || breaks > 100000)
     throw parse_error(path + ": surrogate file: bad threshold sizes");
+  const auto finite = [](std::initializer_list<double> xs) {
+    return std::all_of(xs.begin(), xs.end(), [](double x) { return std::isfinite(x); });
+  };
+  if (!finite({s.gamma_max, s.g_min, s.g_max, s.gamma_ext, s.g_split}) || !(s.gamma_max > 0) || !(s.g_min < s.g_max))
+    throw parse_error(path + ": surrogate file: bad domain");
+  if (!finite({s.bound.abs_e, s.bound.abs_e_squared, s.bound.rel_one_minus_e, s.bound.safety_factor}) ||
+      s.bound.abs_e < 0 || s.bound.abs_e_squared < 0 || s.bound.rel_one_minus_e < 0 || s.bound.safety_factor < 0)
+    throw parse_error(path + ": surrogate file: bad bound");
   s.log_gamma_c.breaks.resize(breaks);
-  for (auto& b : s.log_gamma_c.breaks) b = r.next<double>("threshold break");
+  for (auto& b : s.log_gamma_c.breaks) {
+    b = r.next<double>("threshold break");
+    if (!std::isfinite(b) || (&b != s.log_gamma_c.breaks.data() && !(b > (&b)[-1])))
+      throw parse_error(path + ": surrogate file: threshold breaks must be finite and increasing");
+  }
   s.log_gamma_c.coefficients.resize((breaks - 1) * static_cast<std::size_t>(s.log_gamma_c.order));
   for (auto& c : s.log_gamma_c.coefficients) c = r.next<double>("threshold coefficient");
   s.low_load = detail::read_tree(r, "low_load");
   s.high_load = detail::read_tree(r, "high_load");
   r.expect("end");
+  std::string rest;
+  if (in >> rest) throw parse_error(path + ": surrogate file: text after 'end': '" + rest + "'");
   return s;
+}
+
+/// Reads a surrogate file written by write_cor_surrogate; throws parse_error naming the file.
+inline cor_surrogate read_cor_surrogate(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw invalid_parameter("cannot open surrogate file '" + path + "'");
+  return read_cor_surrogate(in, path);
 }
 
 }  // namespace viscor::surrogate

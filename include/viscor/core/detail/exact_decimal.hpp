@@ -57,6 +57,12 @@ class exact_decimal {
     }
     const std::size_t first_nonzero = digits.find_first_not_of('0');
     digits = first_nonzero == std::string::npos ? "0" : digits.substr(first_nonzero);
+    // Trailing zeros go into the exponent here, not one division at a time in normalise.
+    const std::size_t last_nonzero = digits.find_last_not_of('0');
+    if (last_nonzero != std::string::npos) {
+      exponent10 += static_cast<long long>(digits.size() - 1 - last_nonzero);
+      digits.resize(last_nonzero + 1);
+    }
     if (digits.size() > max_mantissa_digits)
       throw invalid_parameter("parameter " + name + " = " + text + " has too many digits");
     if (exponent10 > max_exponent || exponent10 < -max_exponent)
@@ -115,16 +121,34 @@ class exact_decimal {
     return a.m_mantissa == b.m_mantissa && a.m_exponent == b.m_exponent;  // both normalised
   }
   friend std::strong_ordering operator<=>(const exact_decimal& a, const exact_decimal& b) {
+    // By sign, then by the exponent of the leading digit: numbers far apart are
+    // compared without aligning their exponents (1e99999 against 1 would otherwise
+    // multiply by 10 a hundred thousand times).
+    if (a.sign() != b.sign()) return a.sign() <=> b.sign();
+    if (a.sign() == 0) return std::strong_ordering::equal;
+    if (a.m_exponent == b.m_exponent)
+      return a.m_mantissa == b.m_mantissa ? std::strong_ordering::equal
+                                          : (a.m_mantissa < b.m_mantissa ? std::strong_ordering::less
+                                                                         : std::strong_ordering::greater);
+    const int gap = a.m_exponent > b.m_exponent ? a.m_exponent - b.m_exponent : b.m_exponent - a.m_exponent;
+    if (gap > 64) {  // rare: the leading digits decide unless they are at the same place
+      const long long la = a.leading_exponent(), lb = b.leading_exponent();
+      if (la != lb) return a.sign() > 0 ? la <=> lb : lb <=> la;
+    }
     const integer d = (a - b).m_mantissa;
     return d == 0 ? std::strong_ordering::equal : (d < 0 ? std::strong_ordering::less : std::strong_ordering::greater);
   }
 
  private:
-  // Mantissa for exponent k <= m_exponent.
+  // Mantissa for exponent k <= m_exponent (one multiplication by a power of 10).
   integer scaled_to(int k) const {
-    integer m = m_mantissa;
-    for (int i = k; i < m_exponent; ++i) m *= 10;
-    return m;
+    if (k >= m_exponent) return m_mantissa;
+    return m_mantissa * boost::multiprecision::pow(integer(10), static_cast<unsigned>(m_exponent - k));
+  }
+  // Exponent of the leading decimal digit (x = d.ddd * 10^leading_exponent); x != 0.
+  long long leading_exponent() const {
+    const std::string digits = (m_mantissa < 0 ? integer(-m_mantissa) : m_mantissa).str();
+    return m_exponent + static_cast<long long>(digits.size()) - 1;
   }
   // Strips trailing zeros so that equal numbers have equal representations.
   void normalise() {
