@@ -254,12 +254,12 @@ inline proven_impact prove_impact(const contact_law& law, std::string_view gamma
   const std::size_t order = detail::proof_order(log2_tolerance);
   proven_impact result;
   auto undecided = [&result](std::string why) {
-    result.outcome = proven_outcome::undecided;
+    result.outcome = impact_outcome::undecided;
     result.how = std::move(why);
     return result;
   };
   auto stick = [&result](std::string why) {
-    result.outcome = proven_outcome::stick;
+    result.outcome = impact_outcome::stick;
     result.e = ball(0), result.one_minus_e = ball(1);
     result.how = std::move(why);
     return result;
@@ -333,7 +333,7 @@ inline proven_impact prove_impact(const contact_law& law, std::string_view gamma
         const step_enclosure last = validated_step(out, jet, s_upper, order);
         if (last.validated && last.tight(log2_tolerance) && last.range[1].negative()) {
           const std::vector<ball> end = last.state_at(x[0]);
-          result.outcome = proven_outcome::rebound;
+          result.outcome = impact_outcome::rebound;
           result.e = -end[1];
           result.contact_time = end[2];
           result.one_minus_e = end[3] / (1 + result.e);
