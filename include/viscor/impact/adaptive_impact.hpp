@@ -78,10 +78,11 @@ namespace detail {
 /// Largest Q = lcm(q1, q2) for which the integer-power formulation is used.
 inline constexpr std::int64_t max_regularising_denominator = 360;
 
-/// result = x^n (n >= 0) by binary powering; `base` is scratch (no allocation
-/// when both are reused, which matters for mpfr in the right-hand side).
+/// result = x^n (n >= 0) by repeated squaring; `base` is scratch (no allocation
+/// when both are reused, which matters for mpfr in the right-hand side). A scalar
+/// power, not a series: taylor_series.hpp's powers are Taylor coefficients.
 template <class Real>
-void integer_power(const Real& x, std::int64_t n, Real& result, Real& base) {
+void power_by_squaring(const Real& x, std::int64_t n, Real& result, Real& base) {
   result = 1;
   base = x;
   for (; n > 0; n >>= 1) {
@@ -101,7 +102,7 @@ struct regularised_law {
   // sides read, s^(Q-1), s^Q, s^(Q alpha), s^(Q beta - Q), s^(Q beta) and
   // s^(Q beta - 1), share one table s^0..s^M: s^k is (s^(k/2))^2 for even k and
   // s^(k-1) s for odd k, computed only when needed. Exponents above max_table fall
-  // back to binary powering per power.
+  // back to repeated squaring per power.
   static constexpr std::int64_t max_table = 24;
   enum slot { slot_sq1, slot_u, slot_ua, slot_ub1, slot_ub, slot_diss, slot_count };
   std::array<std::int64_t, slot_count> exponent_of{};  // rational case: the power of s in each slot
@@ -176,7 +177,7 @@ struct regularised_law {
     if (p.s_power.size() != slot_count) p.s_power.assign(slot_count, W(0));
     for (int i = 0; i < slot_count; ++i) p.slots[i] = &p.s_power[i];
     if (rational) {
-      for (int i = 0; i < slot_count; ++i) integer_power(s, exponent_of[i], p.s_power[i], p.scratch);
+      for (int i = 0; i < slot_count; ++i) power_by_squaring(s, exponent_of[i], p.s_power[i], p.scratch);
     } else {
       p.s_power[slot_sq1] = 1;
       p.s_power[slot_u] = s;
