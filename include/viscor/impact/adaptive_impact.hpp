@@ -758,7 +758,7 @@ class adaptive_impact_solver {
       if (-h > longest) h = -longest;
       const vec scales{y[0], abs(y[1]), abs(y[2]), abs(y[3]) > 0 ? abs(y[3]) : W(1)};
       step_guard(h, in_log ? W(1) : y[0]);
-      if (!lobatto.step(f, jacobian, y, h, scales, taken)) continue;
+      if (!lobatto.try_step(f, jacobian, y, h, scales, taken)) continue;
       m_error += m_rtol * abs(y[2]);
     }
   }
