@@ -239,7 +239,7 @@ TEST(ProvenImpact, ProvesSticksNextToTheThreshold) {
 }
 
 // At g = 0 the energy never turns negative, so a stick needs the trap of
-// detail::trapped (alpha + 1 >= 2 beta). Truth: Tsuji's and the linear law's closed
+// detail::creeps_to_origin (alpha + 1 >= 2 beta). Truth: Tsuji's and the linear law's closed
 // forms (stick for gamma >= 4/sqrt(5) and gamma >= 2); Hertz with linear damping is
 // checked against the GBS solver in enclose_cli_test.
 TEST(ProvenImpact, ProvesSticksAtZeroLoad) {

@@ -199,7 +199,7 @@ TEST(radau_integrator, double_lu_reaches_the_real_lu_collocation_solution) {
   ASSERT_TRUE(low.low_precision_lu());
   ASSERT_FALSE(real.low_precision_lu());
   auto step = [](auto& r, auto& f, auto& jac, const auto& y0, const mpfr_50& h, auto& y1) {
-    return r.collocation_step(f, jac, y0, h, y1);
+    return r.fixed_step(f, jac, y0, h, y1);
   };
   compare_decompositions(low, real, step);
   // and it was the double path that answered
@@ -208,7 +208,7 @@ TEST(radau_integrator, double_lu_reaches_the_real_lu_collocation_solution) {
   auto f = [&](const std::array<mpfr_50, 2>& y, std::array<mpfr_50, 2>& d) { return sys(y, d); };
   auto jacobian = [&](const std::array<mpfr_50, 2>& y, std::array<std::array<mpfr_50, 2>, 2>& J) { sys(y, J); };
   std::array<mpfr_50, 2> y1;
-  ASSERT_TRUE(probe.collocation_step(f, jacobian, {mpfr_50("0.3"), mpfr_50(sin(mpfr_50("0.3")))}, mpfr_50("0.5"), y1));
+  ASSERT_TRUE(probe.fixed_step(f, jacobian, {mpfr_50("0.3"), mpfr_50(sin(mpfr_50("0.3")))}, mpfr_50("0.5"), y1));
   EXPECT_EQ(probe.low_precision_solves(), 1u);
   EXPECT_EQ(probe.real_precision_solves(), 0u);
 }
@@ -219,7 +219,7 @@ TEST(lobatto_integrator, double_decomposition_reaches_the_real_stage_values) {
   ASSERT_TRUE(low.low_precision_lu());
   ASSERT_FALSE(real.low_precision_lu());
   auto step = [](auto& r, auto& f, auto& jac, const auto& y0, const mpfr_50& h, auto& y1) {
-    return r.single_step(f, jac, y0, h, y1);
+    return r.fixed_step(f, jac, y0, h, y1);
   };
   compare_decompositions(low, real, step);
   lobatto_integrator<mpfr_50, 2> probe(19, mpfr_50("1e-49"));
@@ -227,7 +227,7 @@ TEST(lobatto_integrator, double_decomposition_reaches_the_real_stage_values) {
   auto f = [&](const std::array<mpfr_50, 2>& y, std::array<mpfr_50, 2>& d) { return sys(y, d); };
   auto jacobian = [&](const std::array<mpfr_50, 2>& y, std::array<std::array<mpfr_50, 2>, 2>& J) { sys(y, J); };
   std::array<mpfr_50, 2> y1;
-  ASSERT_TRUE(probe.single_step(f, jacobian, {mpfr_50("0.3"), mpfr_50(sin(mpfr_50("0.3")))}, mpfr_50("0.5"), y1));
+  ASSERT_TRUE(probe.fixed_step(f, jacobian, {mpfr_50("0.3"), mpfr_50(sin(mpfr_50("0.3")))}, mpfr_50("0.5"), y1));
   EXPECT_EQ(probe.low_precision_solves(), 1u);
   EXPECT_EQ(probe.real_precision_solves(), 0u);
 }
@@ -248,7 +248,7 @@ TEST(lobatto_integrator, a_renewed_matrix_is_not_judged_by_its_first_update) {
   auto jacobian = [&](const std::array<Real, 2>& y, std::array<std::array<Real, 2>, 2>& J) { sys(y, J); };
   const std::array<Real, 2> y0{Real("0.3"), Real(sin(Real("0.3")) + Real("1e-12"))};
   std::array<Real, 2> y1;
-  ASSERT_TRUE(lobatto.single_step(f, jacobian, y0, Real(1), y1));
+  ASSERT_TRUE(lobatto.fixed_step(f, jacobian, y0, Real(1), y1));
   EXPECT_EQ(lobatto.low_precision_solves(), 1u);
   EXPECT_EQ(lobatto.real_precision_solves(), 0u);
   EXPECT_LE(abs(y1[0] - Real("1.3")), Real("1e-48"));

@@ -241,7 +241,7 @@ inline ball pow(const ball& x, unsigned long n) {
 /// 24 guard bits, rounded up to whole 64-bit limbs. The guard bits absorb the widening
 /// of the enclosure over an impact (about 15-21 bits, measured: docs/proofs.md); a
 /// part-used limb costs as much as a full one, and Arb is fastest at one or two limbs,
-/// so 30 digits work in 128 bits (with 64 guard bits they took 192: 2x slower).
+/// so 30 digits work in 128 bits (64 guard bits would take them to 192).
 inline slong working_bits(int digits) {
   const slong needed = static_cast<slong>(std::ceil(digits * 3.3219280948873623)) + 24;
   return (needed + 63) / 64 * 64;

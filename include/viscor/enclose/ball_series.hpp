@@ -57,9 +57,9 @@ inline ball quotient(const ball& a_k, const std::vector<ball>& q, const std::vec
 /// to the next: a fresh vector per coefficient cost k allocations of multi-limb balls
 /// (Arb keeps at most two limbs inline), O(p^2) per jet.
 /// NOTE: the weights stay on each term. Splitting the sum into (a + 1) sum j u_j w_{k-j}
-/// - k sum u_j w_{k-j} (two dot products, no weighted copy) was 10-15 % faster but widened
-/// the remainder over a step's box enough to cost steps (63 -> 69 for Kuwabara-Kono at
-/// 30 digits) and to hide a 1e-9 under-estimated remainder (enclose_impact_test). With
+/// - k sum u_j w_{k-j} (two dot products, no weighted copy) is faster but widens the
+/// remainder over a step's box enough to cost steps and to hide a 1e-9 under-estimated
+/// remainder (enclose_impact_test). With
 /// integer weights (one arb_mul_si per term; they were three ball operations with the
 /// weight a j - (k - j) as a ball) the arithmetic is the same as with those exact weights
 /// when den is a power of two (every named law): the scaling by den is exact.

@@ -39,7 +39,7 @@ struct proven_bounds {
 
 /// What enclose() proved about one impact.
 struct cor_enclosure {
-  proven_outcome outcome = proven_outcome::undecided;  ///< rebound, stick or undecided (nothing claimed)
+  impact_outcome outcome = impact_outcome::undecided;  ///< rebound, stick or undecided (nothing claimed)
   std::string how;                 ///< the argument that decided the outcome, or why it is undecided
   proven_bounds e;                 ///< rebound: encloses e; stick: exactly 0
   proven_bounds one_minus_e;       ///< 1 - e from the dissipated energy (relative width survives gamma -> 0)
@@ -138,10 +138,10 @@ inline proofs::cor_enclosure enclose(const contact_law& law, std::string_view ga
   r.outcome = r.balls.outcome;
   r.how = r.balls.how;
   scoped_ball_bits bits(working_bits(digits));
-  if (r.outcome == proven_outcome::undecided) return r;
+  if (r.outcome == impact_outcome::undecided) return r;
   r.e = proofs::detail::bounds_of(r.balls.e, digits);
   r.one_minus_e = proofs::detail::bounds_of(r.balls.one_minus_e, digits);
-  if (r.outcome == proven_outcome::rebound) r.contact_time = proofs::detail::bounds_of(r.balls.contact_time, digits);
+  if (r.outcome == impact_outcome::rebound) r.contact_time = proofs::detail::bounds_of(r.balls.contact_time, digits);
   if (r.balls.max_compression) r.max_compression = proofs::detail::bounds_of(*r.balls.max_compression, digits);
   return r;
 }

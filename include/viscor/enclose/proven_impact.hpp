@@ -1,19 +1,20 @@
 // A proven impact for any law with rational exponents alpha = a/q_a, beta = b/q_b
 // (docs/proofs.md). With Q = lcm(q_a, q_b) and u = s^Q both ends of the contact,
 // u = 0, are regular points of the equations written in s, so the proof has three
-// phases, each a validated Taylor integration (validated_taylor.hpp):
+// phases (core/impact_phase.hpp; no creep phase), each a validated Taylor integration
+// (validated_taylor.hpp), in detail::impact_proof:
 //
-//   in   s from 0 (exactly) while v stays >= 1/4:      states (s, v, tau, D)
-//   mid  tau through the maximal compression:           states (u, v, D)
-//   out  s down to 0 (exactly) once one s-step reaches:  states (s, v, tau, D)
-//        (back to tau if the s-steps crawl: a turn back at small u > 0)
+//   compress  s from 0 (exactly) while v stays >= 1/4:      states (s, v, tau, D)
+//   turn      tau through the maximal compression:           states (u, v, D)
+//   exit      s down to 0 (exactly) once one s-step reaches:  states (s, v, tau, D)
+//             (back to the turn if the s-steps crawl: a turn back at small u > 0)
 //
 // In s (J = du/ds = Q s^(Q-1); every power of s below is a polynomial):
 //   dv/ds   = (g J - Q s^(Q(alpha+1)-1)) / v - gamma beta Q s^(Q beta-1),
 //   dtau/ds = J / v,   dD/ds = 2 gamma beta Q s^(Q beta-1) v;
 // in tau: u' = v, v' = g - u^alpha - gamma beta u^(beta-1) v,
 //   D' = 2 gamma beta u^(beta-1) v^2.
-// D is the dissipated energy: E = v^2/2 + u^(alpha+1)/(alpha+1) - g u has
+// D is the dissipated energy (core/contact_state.hpp): E = v^2/2 + u^(alpha+1)/(alpha+1) - g u has
 // E' = -gamma beta u^(beta-1) v^2, E(0) = 1/2, E(T_f) = e^2/2, so 1 - e^2 = D(T_f)
 // and 1 - e = D / (1 + e) keeps its relative width as gamma -> 0.
 //
@@ -22,19 +23,19 @@
 // carried as a ball; the end of contact is s = 0 exactly, reached at sigma = s0 of
 // the last step, since s is linear in the step variable sigma: no root finding.
 //
-// Switch points (measured on Kuwabara-Kono, gamma = 0.05, g = 1): in s while
-// v >= 3/4, in tau until an s-step reaches a tenth of the way to s = 0; near
+// Switch points (measured on Kuwabara-Kono, gamma = 0.05, g = 1): compress in s while
+// v >= 3/4, turn in tau until an s-step reaches a tenth of the way to s = 0; near
 // either singular point the series of the other variable converge slowly.
 //
-// u_max: v falls through 0 in the tau phase; the first step in which it may
+// u_max: v falls through 0 in the turn phase; the first step in which it may
 // vanish encloses the turning point by interval Newton (crossing.hpp,
 // first_maximum), and u_max = u there.
 //
-// Outcomes: rebound (v proven negative over every step of the way out, so the
+// Outcomes (core/outcome.hpp): rebound (v proven negative over every step of the exit, so the
 // first return to u = 0 is the end of the last step); stick when E is proven
 // negative after a step in tau or in s (E never increases and E >= 0 at u = 0, so
 // the bead never gets back), or at g = 0 when the state enters a trap that keeps
-// u > 0 for ever (detail::trapped: laws with alpha + 1 >= 2 beta);
+// u > 0 for ever (detail::creeps_to_origin: laws with alpha + 1 >= 2 beta);
 // undecided otherwise (a step that cannot be validated, the bead grazing u = 0, a
 // creep at g = 0 that no argument here traps, or the step budget spent).
 // proven_linear.hpp proves the linear law by a separate, simpler integration in
@@ -42,6 +43,9 @@
 #pragma once
 
 #include <viscor/core/contact_law.hpp>
+#include <viscor/core/contact_state.hpp>
+#include <viscor/core/impact_phase.hpp>
+#include <viscor/core/outcome.hpp>
 #include <viscor/enclose/ball_series.hpp>
 #include <viscor/enclose/crossing.hpp>
 #include <viscor/enclose/proven_result.hpp>
@@ -68,10 +72,11 @@ struct impact_ball_constants {
 };
 
 /// The equations in s, stepping in sigma with s = s0 + direction sigma.
-/// States: (s, v, tau, D).
+/// States: (s, v, tau, D), D the dissipated energy of core/contact_state.hpp.
 struct s_system {
+  enum : std::size_t { s = 0, v = 1, tau = 2, D = 3 };  ///< the components of a state
   const impact_ball_constants* k;
-  int direction = 1;  ///< +1: s grows (the way in); -1: s falls (the way out)
+  int direction = 1;  ///< +1: s grows (the compress phase); -1: s falls (the exit)
 
   /// Four components: s, v, tau, D.
   std::size_t size() const { return 4; }
@@ -125,6 +130,7 @@ struct s_system {
 
 /// The equations in tau. States: (u, v, D); needs u > 0.
 struct tau_system {
+  enum : std::size_t { u = 0, v = 1, D = 2 };  ///< the components of a state
   const impact_ball_constants* k;
 
   /// Three components: u, v, D.
@@ -170,6 +176,12 @@ inline ball energy(const impact_ball_constants& k, const ball& u, const ball& v)
   return v * v / 2 + spring / a1 - k.g * u;
 }
 
+/// Whether E is proven negative at (u, v): E never increases and E >= 0 at u = 0, so
+/// the bead never gets back (the solvers' energy_proven_negative, written apart).
+inline bool energy_proven_negative(const impact_ball_constants& k, const ball& u, const ball& v) {
+  return energy(k, u, v).negative();
+}
+
 /// v' = g - u^alpha - gamma beta u^(beta-1) v over a ball state (u, v, ...), u > 0.
 inline ball acceleration(const impact_ball_constants& k, const std::vector<ball>& x) {
   ball spring, damping(1);
@@ -191,7 +203,8 @@ inline ball acceleration(const impact_ball_constants& k, const std::vector<ball>
 /// ever (u >= u0 exp(-c tau) for beta = 1, algebraic decay for beta > 1). At kappa = 0
 /// the last condition is gamma > 2/sqrt(beta), the critical damping of the linear
 /// law and of Tsuji's exact solution at g = 0. `trap_applies` is false otherwise.
-inline bool trapped(const impact_ball_constants& k, bool trap_applies, const ball& u, const ball& v) {
+/// Deliberately the same barrier argument as the solvers' creeps_to_origin, written apart.
+inline bool creeps_to_origin(const impact_ball_constants& k, bool trap_applies, const ball& u, const ball& v) {
   if (!trap_applies || !u.positive() || !v.negative()) return false;
   const ball kappa = k.alpha + 1 - 2 * k.beta;
   ball u_beta, u_kappa;
@@ -221,6 +234,181 @@ inline std::size_t proof_order(double log2_tolerance) {
   return static_cast<std::size_t>(std::ceil(-log2_tolerance * std::log(2.0) / 2 + 1));
 }
 
+/// The constants of a proof of (law, gamma, g), gamma and g exact decimals; throws
+/// invalid_parameter as prove_impact documents.
+inline impact_ball_constants make_ball_constants(const contact_law& law, std::string_view gamma_text,
+                                                 std::string_view g_text) {
+  impact_ball_constants k;
+  k.alpha = ball(static_cast<long>(law.alpha.numerator())) / ball(static_cast<long>(law.alpha.denominator()));
+  k.beta = ball(static_cast<long>(law.beta.numerator())) / ball(static_cast<long>(law.beta.denominator()));
+  k.gamma = ball::from_decimal(gamma_text, "gamma");
+  k.g = ball::from_decimal(g_text, "g");
+  if (!k.gamma.nonnegative()) throw invalid_parameter("gamma must be >= 0, got " + std::string(gamma_text));
+  k.gamma_beta = k.gamma * k.beta;
+  const exponent_multiples multiples = law.multiples();  // checked: validate() refused any overflow
+  k.Q = multiples.Q, k.Q_alpha = multiples.Q_alpha, k.Q_beta = multiples.Q_beta;
+  k.beta_is_one = law.beta.numerator() == law.beta.denominator();
+  // alpha - (beta - 1) = (Q alpha - Q beta + Q) / Q.
+  if (const long shift = k.Q_alpha - k.Q_beta + k.Q; !k.beta_is_one && (shift == 0 || shift == k.Q))
+    k.spring_shift = shift / k.Q;
+  return k;
+}
+
+/// One proof, phase by phase (core/impact_phase.hpp: compress, turn, exit; no creep
+/// phase). Each phase takes the state it starts at and returns how it ended: on to
+/// the next phase (the state updated in place), back to the turn from the exit, or
+/// decided (the proof's result holds rebound, stick or undecided).
+class impact_proof {
+ public:
+  enum class phase_end { next, back_to_turn, decided };
+
+  impact_proof(const impact_ball_constants& k, const proof_options& options)
+      : m_k(k),
+        m_options(options),
+        m_log2_tolerance(
+            -static_cast<double>(options.step_tolerance_bits > 0 ? options.step_tolerance_bits : proofs::ball_bits())),
+        m_order(proof_order(m_log2_tolerance)),
+        // g = 0 exactly and alpha + 1 >= 2 beta: the trap of creeps_to_origin exists.
+        m_trap_applies(arb_is_zero(k.g.get()) && k.Q_alpha + k.Q >= 2 * k.Q_beta && k.gamma.positive()) {}
+
+  proven_impact run() {
+    std::vector<ball> x{ball(0), ball(1), ball(0), ball(0)};  // s_system: s, v, tau, D
+    if (compress_phase(x) == phase_end::decided) return m_result;
+    m_tau = x[s_system::tau];
+    for (;;) {
+      if (turn_phase(x) == phase_end::decided) return m_result;
+      if (exit_phase(x) == phase_end::decided) return m_result;
+    }
+  }
+
+ private:
+  phase_end undecided(std::string why) {
+    m_result.outcome = impact_outcome::undecided;
+    m_result.how = std::move(why);
+    return phase_end::decided;
+  }
+  phase_end stick(std::string why) {
+    m_result.outcome = impact_outcome::stick;
+    m_result.e = ball(0), m_result.one_minus_e = ball(1);
+    m_result.how = std::move(why);
+    return phase_end::decided;
+  }
+  // Whether the step budget is spent (counting this step).
+  bool budget_spent() { return ++m_result.steps > m_options.max_steps; }
+
+  // ---- compress: s from 0 while v >= 1/4 over the whole step; on to the turn once
+  // v < 3/4 (near the maximal compression, where v -> 0, the s-series converge slowly).
+  // x: the s_system state (s, v, tau, D), from first contact to where the turn starts.
+  phase_end compress_phase(std::vector<ball>& x) {
+    const ball quarter = ball(1) / ball(4), three_quarters = ball(3) / ball(4);
+    const s_system in{&m_k, +1};
+    step_memory memory;
+    for (;;) {
+      if (budget_spent()) return undecided("step budget exhausted on the way in");
+      const auto step = find_step(in, in.jet(x, m_order), m_order, m_log2_tolerance, memory, m_options.max_halvings,
+                                  [&](const step_enclosure& st) { return (st.range[s_system::v] - quarter).positive(); });
+      if (!step) {
+        if (x[s_system::s].positive()) return phase_end::next;  // v is near 1/4: continue in tau
+        return undecided("no validated first step in s");
+      }
+      x = step->state_at(step->h);
+      if (!(x[s_system::v] - three_quarters).positive()) return phase_end::next;
+    }
+  }
+
+  // ---- turn: in tau through the maximal compression, until one s-step of the exit
+  // reaches a tenth of the way to s = 0 (near u = 0 the tau-series converge slowly).
+  // x: the s_system state where the turn starts, on return where the exit starts (its
+  // first jet in m_exit_jet).
+  phase_end turn_phase(std::vector<ball>& x) {
+    const tau_system mid{&m_k};
+    const s_system out{&m_k, -1};
+    std::vector<ball> y{pow(x[s_system::s], static_cast<unsigned long>(m_k.Q)), x[s_system::v],
+                        x[s_system::D]};  // tau_system: u, v, D
+    step_memory memory;
+    for (;;) {
+      if (budget_spent()) return undecided("step budget exhausted in tau");
+      const auto step = find_step(mid, mid.jet(y, m_order), m_order, m_log2_tolerance, memory, m_options.max_halvings,
+                                  [](const step_enclosure& st) { return st.range[tau_system::u].positive(); });
+      if (!step) return undecided("no validated step in tau at tau = " + m_tau.mid_str(10));
+      const impact_ball_constants& k = m_k;
+      m_turning.add(*step, tau_system::u, tau_system::v,
+                    [&k](const std::vector<ball>& state) { return acceleration(k, state); });
+      m_result.max_compression = m_turning.value();
+      y = step->state_at(step->h);
+      m_tau = m_tau + step->h;
+      if (energy_proven_negative(m_k, y[tau_system::u], y[tau_system::v]))
+        return stick("energy proven negative at tau = " + m_tau.mid_str(10));
+      if (creeps_to_origin(m_k, m_trap_applies, y[tau_system::u], y[tau_system::v]))
+        return stick("trapped at g = 0 (-gamma u^beta / 2 < v < 0) at tau = " + m_tau.mid_str(10));
+      if (!y[tau_system::v].negative()) continue;
+      x = {root(y[tau_system::u], m_k.Q), y[tau_system::v], m_tau, y[tau_system::D]};
+      m_exit_jet = out.jet(x, m_order);  // the exit's first jet, if the switch is made
+      if (proposed_step(m_exit_jet, m_order, m_log2_tolerance) >= x[s_system::s].mid_double() / 10)
+        return phase_end::next;
+    }
+  }
+
+  // ---- exit: s down to 0, with v < 0 over every step. The last step is as long as
+  // the upper bound of s, and ends where sigma = s0: s = 0 exactly. Next to the
+  // sticking threshold the bead turns back at a small u > 0: v -> 0 there, dv/ds grows
+  // like 1/v and the s-steps shrink towards that point without reaching it (it took
+  // 10,000 steps). So when a step covers less than 1/64 of s, the proof goes back to
+  // the turn, where v = 0 is a regular point and the energy soon proves the stick (or,
+  // if v stays negative, the s-steps lengthen again).
+  phase_end exit_phase(std::vector<ball>& x) {
+    const s_system out{&m_k, -1};
+    step_memory memory;
+    for (bool first_step = true;; first_step = false) {
+      if (budget_spent()) return undecided("step budget exhausted on the way out");
+      const ball_jet jet = first_step ? std::move(m_exit_jet) : out.jet(x, m_order);
+      if (last_step_reaches_zero(out, jet, x)) {
+        if (!m_result.e.positive()) return undecided("e not proven > 0");
+        return phase_end::decided;
+      }
+      const auto step = find_step(out, jet, m_order, m_log2_tolerance, memory, m_options.max_halvings,
+                                  [](const step_enclosure& st) {
+                                    return st.range[s_system::v].negative() && st.range[s_system::s].positive();
+                                  });
+      if (!step) return undecided("no validated step on the way out (v near 0?)");
+      x = step->state_at(step->h);
+      m_tau = x[s_system::tau];
+      const ball u = pow(x[s_system::s], static_cast<unsigned long>(m_k.Q));
+      if (energy_proven_negative(m_k, u, x[s_system::v]))
+        return stick("energy proven negative on the way out at tau = " + m_tau.mid_str(10));
+      if (creeps_to_origin(m_k, m_trap_applies, u, x[s_system::v]))
+        return stick("trapped at g = 0 (-gamma u^beta / 2 < v < 0) on the way out at tau = " + m_tau.mid_str(10));
+      if (step->h.mid_double() < x[s_system::s].mid_double() / 64) return phase_end::back_to_turn;  // crawling
+    }
+  }
+
+  // Whether one validated step from x reaches s = 0 with v < 0 throughout: then the
+  // rebound is proven and m_result holds it (its e may still not be proven > 0).
+  bool last_step_reaches_zero(const s_system& out, const ball_jet& jet, const std::vector<ball>& x) {
+    const ball s_upper = upper_bound(x[s_system::s]);
+    if (!(proposed_step(jet, m_order, m_log2_tolerance) >= s_upper.mid_double())) return false;
+    const step_enclosure last = validated_step(out, jet, s_upper, m_order);
+    if (!(last.validated && last.tight(m_log2_tolerance) && last.range[s_system::v].negative())) return false;
+    const std::vector<ball> end = last.state_at(x[s_system::s]);
+    m_result.outcome = impact_outcome::rebound;
+    m_result.e = -end[s_system::v];
+    m_result.contact_time = end[s_system::tau];
+    m_result.one_minus_e = end[s_system::D] / (1 + m_result.e);
+    m_result.how = "s reaches 0 with v < 0 over the last step";
+    return true;
+  }
+
+  const impact_ball_constants m_k;
+  const proof_options m_options;
+  const double m_log2_tolerance;
+  const std::size_t m_order;
+  const bool m_trap_applies;
+  proven_impact m_result;
+  first_maximum m_turning;  // u_max: v falls through 0 in tau (v >= 1/4 before, v < 0 after)
+  ball m_tau;               // tau at the current state
+  ball_jet m_exit_jet;      // the exit's first jet, computed where the turn decides to leave
+};
+
 }  // namespace detail
 
 /// Proves the impact of `law` (rational exponents) at (gamma, g), given as exact
@@ -235,126 +423,7 @@ inline proven_impact prove_impact(const contact_law& law, std::string_view gamma
                             " are not rational (the end points need u = s^Q)");
   if (digits < 5 || digits > 100000) throw invalid_parameter("digits must be in [5, 100000], got " + std::to_string(digits));
   scoped_ball_bits bits(working_bits(digits));
-  impact_ball_constants k;
-  k.alpha = ball(static_cast<long>(law.alpha.numerator())) / ball(static_cast<long>(law.alpha.denominator()));
-  k.beta = ball(static_cast<long>(law.beta.numerator())) / ball(static_cast<long>(law.beta.denominator()));
-  k.gamma = ball::from_decimal(gamma_text, "gamma");
-  k.g = ball::from_decimal(g_text, "g");
-  if (!k.gamma.nonnegative()) throw invalid_parameter("gamma must be >= 0, got " + std::string(gamma_text));
-  k.gamma_beta = k.gamma * k.beta;
-  const exponent_multiples multiples = law.multiples();  // checked: validate() refused any overflow
-  k.Q = multiples.Q, k.Q_alpha = multiples.Q_alpha, k.Q_beta = multiples.Q_beta;
-  k.beta_is_one = law.beta.numerator() == law.beta.denominator();
-  // alpha - (beta - 1) = (Q alpha - Q beta + Q) / Q.
-  if (const long shift = k.Q_alpha - k.Q_beta + k.Q; !k.beta_is_one && (shift == 0 || shift == k.Q))
-    k.spring_shift = shift / k.Q;
-
-  const double log2_tolerance =
-      -static_cast<double>(options.step_tolerance_bits > 0 ? options.step_tolerance_bits : proofs::ball_bits());
-  const std::size_t order = detail::proof_order(log2_tolerance);
-  proven_impact result;
-  auto undecided = [&result](std::string why) {
-    result.outcome = proven_outcome::undecided;
-    result.how = std::move(why);
-    return result;
-  };
-  auto stick = [&result](std::string why) {
-    result.outcome = proven_outcome::stick;
-    result.e = ball(0), result.one_minus_e = ball(1);
-    result.how = std::move(why);
-    return result;
-  };
-  // g = 0 exactly and alpha + 1 >= 2 beta: the trap of detail::trapped exists.
-  const bool trap_applies = arb_is_zero(k.g.get()) && k.Q_alpha + k.Q >= 2 * k.Q_beta && k.gamma.positive();
-  const ball quarter = ball(1) / ball(4), three_quarters = ball(3) / ball(4);
-
-  // The way in: s from 0 while v >= 1/4 over the whole step; on to tau once v < 3/4
-  // (near the maximal compression, where v -> 0, the s-series converge slowly).
-  s_system in{&k, +1};
-  std::vector<ball> x{ball(0), ball(1), ball(0), ball(0)};  // s, v, tau, D
-  step_memory memory;
-  for (;;) {
-    if (++result.steps > options.max_steps) return undecided("step budget exhausted on the way in");
-    const auto step = find_step(in, in.jet(x, order), order, log2_tolerance, memory, options.max_halvings,
-                                [&](const step_enclosure& st) { return (st.range[1] - quarter).positive(); });
-    if (!step) {
-      if (x[0].positive()) break;  // v is near 1/4: continue in tau
-      return undecided("no validated first step in s");
-    }
-    x = step->state_at(step->h);
-    if (!(x[1] - three_quarters).positive()) break;
-  }
-
-  // Through the maximal compression in tau, then out in s; back to tau when the
-  // s-steps crawl (see below).
-  tau_system mid{&k};
-  s_system out{&k, -1};
-  first_maximum turning;  // u_max: v falls through 0 in tau (v >= 1/4 before, v < 0 after)
-  ball tau = x[2];
-  ball_jet out_jet;
-  for (;;) {
-    // In tau, until one s-step reaches a tenth of the way to s = 0 (near u = 0 the
-    // tau-series converge slowly).
-    std::vector<ball> y{pow(x[0], static_cast<unsigned long>(k.Q)), x[1], x[3]};  // u, v, D
-    memory = {};
-    for (;;) {
-      if (++result.steps > options.max_steps) return undecided("step budget exhausted in tau");
-      const auto step = find_step(mid, mid.jet(y, order), order, log2_tolerance, memory, options.max_halvings,
-                                  [](const step_enclosure& st) { return st.range[0].positive(); });
-      if (!step) return undecided("no validated step in tau at tau = " + tau.mid_str(10));
-      turning.add(*step, 0, 1, [&k](const std::vector<ball>& state) { return detail::acceleration(k, state); });
-      result.max_compression = turning.value();
-      y = step->state_at(step->h);
-      tau = tau + step->h;
-      if (detail::energy(k, y[0], y[1]).negative()) return stick("energy proven negative at tau = " + tau.mid_str(10));
-      if (detail::trapped(k, trap_applies, y[0], y[1]))
-        return stick("trapped at g = 0 (-gamma u^beta / 2 < v < 0) at tau = " + tau.mid_str(10));
-      if (!y[1].negative()) continue;
-      x = {detail::root(y[0], k.Q), y[1], tau, y[2]};
-      out_jet = out.jet(x, order);  // the way out's first jet, if the switch is made
-      if (proposed_step(out_jet, order, log2_tolerance) >= x[0].mid_double() / 10) break;
-    }
-
-    // The way out: s down to 0, with v < 0 over every step. The last step is as long
-    // as the upper bound of s, and ends where sigma = s0: s = 0 exactly. Next to the
-    // sticking threshold the bead turns back at a small u > 0: v -> 0 there, dv/ds
-    // grows like 1/v and the s-steps shrink towards that point without reaching it
-    // (it took 10,000 steps). So when a step covers less than 1/64 of s, the proof
-    // goes back to tau, where v = 0 is a regular point and the energy soon proves
-    // the stick (or, if v stays negative, the s-steps lengthen again).
-    memory = {};
-    bool crawling = false, first_out_step = true;
-    while (!crawling) {
-      if (++result.steps > options.max_steps) return undecided("step budget exhausted on the way out");
-      const ball_jet jet = first_out_step ? std::move(out_jet) : out.jet(x, order);
-      first_out_step = false;
-      const ball s_upper = detail::upper_bound(x[0]);
-      if (proposed_step(jet, order, log2_tolerance) >= s_upper.mid_double()) {
-        const step_enclosure last = validated_step(out, jet, s_upper, order);
-        if (last.validated && last.tight(log2_tolerance) && last.range[1].negative()) {
-          const std::vector<ball> end = last.state_at(x[0]);
-          result.outcome = proven_outcome::rebound;
-          result.e = -end[1];
-          result.contact_time = end[2];
-          result.one_minus_e = end[3] / (1 + result.e);
-          result.how = "s reaches 0 with v < 0 over the last step";
-          if (!result.e.positive()) return undecided("e not proven > 0");
-          return result;
-        }
-      }
-      const auto step = find_step(out, jet, order, log2_tolerance, memory, options.max_halvings,
-                                  [](const step_enclosure& st) { return st.range[1].negative() && st.range[0].positive(); });
-      if (!step) return undecided("no validated step on the way out (v near 0?)");
-      x = step->state_at(step->h);
-      tau = x[2];
-      const ball u = pow(x[0], static_cast<unsigned long>(k.Q));
-      if (detail::energy(k, u, x[1]).negative())
-        return stick("energy proven negative on the way out at tau = " + tau.mid_str(10));
-      if (detail::trapped(k, trap_applies, u, x[1]))
-        return stick("trapped at g = 0 (-gamma u^beta / 2 < v < 0) on the way out at tau = " + tau.mid_str(10));
-      crawling = step->h.mid_double() < x[0].mid_double() / 64;
-    }
-  }
+  return detail::impact_proof(detail::make_ball_constants(law, gamma_text, g_text), options).run();
 }
 
 }  // namespace viscor::proofs

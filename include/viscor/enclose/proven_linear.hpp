@@ -114,14 +114,14 @@ inline proven_impact prove_linear_impact(std::string_view gamma_text, std::strin
       const auto crossing = enclose_crossing(step, 0, 1);
       if (!crossing) continue;
       const std::vector<ball> at_exit = step.state_at(*crossing);
-      result.outcome = proven_outcome::rebound;
+      result.outcome = impact_outcome::rebound;
       result.e = -at_exit[1];
       result.one_minus_e = at_exit[2] / (1 + result.e);
       result.contact_time = t + *crossing;
       turning.add(step, 0, 1, acceleration);  // v's last zero may be on this step's start
       result.max_compression = turning.value();
       result.how = "u crosses 0 with v < 0 (interval Newton on the validated step)";
-      if (!result.e.positive()) result.outcome = proven_outcome::undecided, result.how = "e not proven > 0";
+      if (!result.e.positive()) result.outcome = impact_outcome::undecided, result.how = "e not proven > 0";
       return result;
     }
     turning.add(step, 0, 1, acceleration);
@@ -130,13 +130,13 @@ inline proven_impact prove_linear_impact(std::string_view gamma_text, std::strin
     t = t + step.h;
     const ball energy = x[1] * x[1] / 2 + x[0] * x[0] / 2 - g * x[0];
     if (energy.negative()) {
-      result.outcome = proven_outcome::stick;
+      result.outcome = impact_outcome::stick;
       result.e = ball(0), result.one_minus_e = ball(1);
       result.how = "energy v^2/2 + u^2/2 - g u proven negative at t = " + t.mid_str(10);
       return result;
     }
     if (sector_exists && x[0].positive() && (x[1] - sector_slope * x[0]).nonnegative()) {
-      result.outcome = proven_outcome::stick;
+      result.outcome = impact_outcome::stick;
       result.e = ball(0), result.one_minus_e = ball(1);
       result.how = "trapped in the sector v >= -(gamma/2) u, u > 0 at t = " + t.mid_str(10);
       return result;

@@ -1,6 +1,7 @@
 // What a proof of an impact established.
 #pragma once
 
+#include <viscor/core/outcome.hpp>
 #include <viscor/enclose/ball.hpp>
 
 #include <cmath>
@@ -11,19 +12,16 @@
 
 namespace viscor::proofs {
 
-/// rebound: the bead provably leaves the wall, e > 0 enclosed. stick: it provably
-/// never reaches u = 0 again (e = 0). undecided: the working precision (or the step
-/// budget) could not separate the two; nothing is claimed.
-enum class proven_outcome { rebound, stick, undecided };
-
-/// The outcome's name as in JSON ("rebound", "stick", "undecided").
-inline std::string_view to_string(proven_outcome o) {
-  return o == proven_outcome::rebound ? "rebound" : o == proven_outcome::stick ? "stick" : "undecided";
-}
+/// The outcome of a proof: the solvers' impact_outcome (core/outcome.hpp). rebound:
+/// the bead provably leaves the wall, e > 0 enclosed. stick: it provably never reaches
+/// u = 0 again (e = 0). undecided: the working precision (or the step budget) could
+/// not separate the two; nothing is claimed.
+using proven_outcome = impact_outcome;
+using viscor::to_string;  // the outcome's name as in JSON, also as proofs::to_string
 
 /// A proven impact: every ball contains the exact value.
 struct proven_impact {
-  proven_outcome outcome = proven_outcome::undecided;
+  impact_outcome outcome = impact_outcome::undecided;
   ball e;             ///< rebound: encloses e; stick: exactly 0
   ball one_minus_e;   ///< from the dissipated energy, so its relative width survives gamma -> 0
   ball contact_time;  ///< rebound: encloses T_f (scaled time)

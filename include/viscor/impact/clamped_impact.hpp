@@ -40,6 +40,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <numeric>
 
@@ -103,119 +104,173 @@ clamped_flight<Real> clamped_free_flight(const Real& u, const Real& v, const Rea
   return r;
 }
 
+/// The clamped impact integrated in Real throughout (solve_clamped_impact runs it in a
+/// wider type): contact phases (contact_phase, in s then tau, or tau alone) until the
+/// force switches off, each followed by a free flight (clamped_free_flight), until the
+/// bead leaves or the energy W proves a stick (header comment).
+template <class Real>
+class clamped_impact_solver {
+ public:
+  using state = std::array<Real, 2>;  // u, u'
+
+  clamped_impact_solver(const contact_law& law, const Real& gamma, const Real& g, const Real& rtol,
+                        std::size_t max_steps, int columns)
+      : m_g(g), m_rtol(rtol), m_max_steps(max_steps), m_columns(columns) {
+    using std::pow;
+    m_alpha = law.alpha.value<Real>(), m_beta = law.beta.value<Real>();
+    m_p = m_alpha - m_beta + 1, m_gamma_beta = gamma * m_beta;
+    m_q = law.multiples().Q;
+    m_s_end = pow(Real(1) / 4, Real(1) / Real(m_q));  // the first part in s up to tau = 1/4
+  }
+
+  clamped_impact_result<Real> solve() {
+    clamped_impact_result<Real> r;
+    state y{Real(0), Real(1)};
+    Real tau = 0;
+    for (bool first = true;; first = false) {
+      ++r.contact_phases;
+      if (contact_phase(first, y, tau, r)) return r;  // stuck
+      if (r.first_release_time == 0) r.first_release_time = tau;
+      r.release_overlap = y[0], r.release_speed = y[1];
+      const clamped_flight<Real> flight = clamped_free_flight(y[0], y[1], m_g, m_p, m_gamma_beta);
+      tau += flight.duration;
+      y = {flight.u, flight.v};
+      if (flight.leaves) {
+        r.e = -flight.v, r.contact_time = tau;
+        return r;
+      }
+      if (energy(y) < 0) {
+        r.outcome = impact_outcome::stick, r.e = 0, r.contact_time = tau;
+        return r;
+      }
+    }
+  }
+
+ private:
+  // h = u^p + gamma beta u': the force is u^(beta-1) h.
+  Real h_of(const state& y) const {
+    using std::pow;
+    return Real(pow(y[0], m_p) + m_gamma_beta * y[1]);
+  }
+  // W = u'^2/2 + u^(alpha+1)/(alpha+1) - g u, which never increases.
+  Real energy(const state& y) const {
+    using std::pow;
+    return Real(y[1] * y[1] / 2 + pow(y[0], m_alpha + 1) / (m_alpha + 1) - m_g * y[0]);
+  }
+  // u'' in contact; false outside u >= 0.
+  bool accel(const state& y, Real& a) const {
+    using std::pow;
+    if (!(y[0] >= 0)) return false;
+    a = m_g - (pow(y[0], m_alpha) + m_gamma_beta * pow(y[0], m_beta - 1) * y[1]);
+    return true;
+  }
+  // d/dtau (u, u') in contact.
+  bool rates_in_tau(const state& y, state& dy) const {
+    dy[0] = y[1];
+    return accel(y, dy[1]);
+  }
+  // d/ds (u, u') with tau = s^q: dtau/ds = q s^(q-1).
+  bool rates_in_s(const Real& s, const state& y, state& dy) const {
+    using std::pow;
+    const Real jac = m_q == 1 ? Real(1) : Real(m_q * pow(s, Real(m_q - 1)));
+    if (!accel(y, dy[1])) return false;
+    dy[0] = jac * y[1];
+    dy[1] *= jac;
+    return true;
+  }
+  Real tau_of(bool use_s, const Real& t) const {
+    using std::pow;
+    return use_s ? Real(pow(t, Real(m_q))) : t;
+  }
+
+  // One contact phase from (tau, y) until h < 0 (the force switches off: y and tau
+  // where it does) or W < 0 (stuck: returns true, r says so). The first phase starts
+  // in s (first).
+  bool contact_phase(bool first, state& y, Real& tau, clamped_impact_result<Real>& r) {
+    for (int part = first ? 0 : 1; part < 2; ++part) {
+      const contact_part end = integrate_part(part == 0, y, tau, r);
+      if (end == contact_part::stuck) return true;
+      if (end == contact_part::switched) return false;
+    }
+    return false;
+  }
+
+  enum class contact_part { on_to_tau, switched, stuck };
+
+  // One part of a contact phase, in s (use_s, up to tau = 1/4) or in tau: steps until
+  // the part ends (on_to_tau), the force switches off within a step (switched: the
+  // switch located, y and tau there) or W < 0 (stuck, r says so).
+  contact_part integrate_part(bool use_s, state& y, Real& tau, clamped_impact_result<Real>& r) {
+    auto in_s = [this](const Real& s, const state& y_, state& dy) { return rates_in_s(s, y_, dy); };
+    auto in_tau = [this](const Real&, const state& y_, state& dy) { return rates_in_tau(y_, dy); };
+    viscor::gbs_integrator<Real, 2> integ(m_rtol, state{m_rtol, m_rtol}, m_columns);
+    Real t = use_s ? Real(0) : tau;  // s in the first part
+    Real step = use_s ? Real(m_s_end / 16) : Real(1) / 16;
+    while (true) {
+      if (r.steps >= m_max_steps)
+        throw convergence_error("clamped impact: step budget of " + std::to_string(m_max_steps) + " exhausted");
+      const bool clipped = use_s && t + step >= m_s_end;
+      if (clipped) step = m_s_end - t;
+      const Real t0 = t;
+      const state y0 = y;
+      const gbs_status status = use_s ? integ.try_step(in_s, t, y, step) : integ.try_step(in_tau, t, y, step);
+      if (status == gbs_status::non_finite) throw convergence_error("clamped impact: state is not finite");
+      if (status != gbs_status::accepted) continue;
+      if (clipped) t = m_s_end;  // exactly, so the s part ends
+      ++r.steps;
+      if (y[0] > 0 && h_of(y) > 0) {
+        if (energy(y) < 0) {
+          r.outcome = impact_outcome::stick, r.e = 0;
+          r.contact_time = tau_of(use_s, t);
+          return contact_part::stuck;
+        }
+        if (use_s && !(t < m_s_end)) {  // on to tau
+          tau = tau_of(use_s, t);
+          return contact_part::on_to_tau;
+        }
+        continue;
+      }
+      // The switch h = 0 lies in this step: find the step length that reaches it.
+      const int cols = integ.last_columns();
+      auto h_after = [&](const Real& len) {
+        state out;
+        const bool ok = use_s ? integ.fixed_step(in_s, t0, y0, len, cols, out)
+                              : integ.fixed_step(in_tau, t0, y0, len, cols, out);
+        return ok && out[0] > 0 ? h_of(out) : Real(-1);
+      };
+      const Real len = bracketed_root(h_after, Real(0), Real(t - t0), "clamped impact: force-zero switch");
+      const bool ok = use_s ? integ.fixed_step(in_s, t0, y0, len, cols, y) : integ.fixed_step(in_tau, t0, y0, len, cols, y);
+      if (!ok) throw convergence_error("clamped impact: switch step left the contact");
+      t = t0 + len;
+      tau = tau_of(use_s, t);
+      return contact_part::switched;
+    }
+  }
+
+  Real m_g, m_rtol;
+  std::size_t m_max_steps;
+  int m_columns;
+  Real m_alpha, m_beta, m_p, m_gamma_beta, m_s_end;
+  std::int64_t m_q;
+};
+
 /// The clamped impact integrated in Real throughout (solve_clamped_impact calls it in a wider type).
 template <class Real>
 clamped_impact_result<Real> solve_clamped_impact_in(const contact_law& law, const Real& gamma, const Real& g,
                                                     const Real& rtol, std::size_t max_steps, int columns) {
-  using std::abs;
-  using std::pow;
-  using std::sqrt;
   law.validate();
   require_non_negative(gamma, "gamma");
   require_finite(g, "g");
   if (!law.alpha.is_rational() || !law.beta.is_rational() ||
       __int128(law.alpha.numerator()) * law.beta.denominator() < __int128(law.beta.numerator()) * law.alpha.denominator())
     throw invalid_parameter("clamped impact needs rational exponents with alpha >= beta, got " + law.describe());
-  const Real alpha = law.alpha.value<Real>(), beta = law.beta.value<Real>();
-  const Real p = alpha - beta + 1, gamma_beta = gamma * beta;
-  const std::int64_t q = law.multiples().Q;
-  using state = std::array<Real, 2>;
-
-  auto h_of = [&](const state& y) { return Real(pow(y[0], p) + gamma_beta * y[1]); };
-  auto energy = [&](const state& y) {
-    return Real(y[1] * y[1] / 2 + pow(y[0], alpha + 1) / (alpha + 1) - g * y[0]);
-  };
-  auto accel = [&](const state& y, Real& a) {  // u'' in contact; false outside u >= 0
-    if (!(y[0] >= 0)) return false;
-    a = g - (pow(y[0], alpha) + gamma_beta * pow(y[0], beta - 1) * y[1]);
-    return true;
-  };
-  // d/dtau (u, u') in contact.
-  auto in_tau = [&](const Real&, const state& y, state& dy) {
-    dy[0] = y[1];
-    return accel(y, dy[1]);
-  };
-  // d/ds (u, u') with tau = s^q: dtau/ds = q s^(q-1).
-  auto in_s = [&](const Real& s, const state& y, state& dy) {
-    const Real jac = q == 1 ? Real(1) : Real(q * pow(s, Real(q - 1)));
-    if (!accel(y, dy[1])) return false;
-    dy[0] = jac * y[1];
-    dy[1] *= jac;
-    return true;
-  };
-
-  clamped_impact_result<Real> r;
+  clamped_impact_solver<Real> solver(law, gamma, g, rtol, max_steps, columns);
   if (gamma == 0) {  // f = u^alpha >= 0 never clamps, and energy conservation gives e = 1
+    clamped_impact_result<Real> r;
     r.e = 1, r.contact_phases = 1;
     return r;
   }
-  state y{Real(0), Real(1)};
-  Real tau = 0;
-  const Real s_end = pow(Real(1) / 4, Real(1) / Real(q));  // first phase in s up to tau = 1/4
-  bool first = true;
-  while (true) {
-    ++r.contact_phases;
-    // One contact phase: from (tau, y) until h < 0 (switch) or W < 0 (stick).
-    bool switched = false;
-    for (int part = first ? 0 : 1; part < 2 && !switched; ++part) {
-      const bool use_s = part == 0;
-      viscor::gbs_integrator<Real, 2> integ(rtol, state{rtol, rtol}, columns);
-      Real t = use_s ? Real(0) : tau;  // s in the first part
-      Real step = use_s ? Real(s_end / 16) : Real(1) / 16;
-      while (true) {
-        if (r.steps >= max_steps)
-          throw convergence_error("clamped impact: step budget of " + std::to_string(max_steps) + " exhausted");
-        const bool clipped = use_s && t + step >= s_end;
-        if (clipped) step = s_end - t;
-        const Real t0 = t;
-        const state y0 = y;
-        const gbs_status status = use_s ? integ.try_step(in_s, t, y, step) : integ.try_step(in_tau, t, y, step);
-        if (status == gbs_status::non_finite) throw convergence_error("clamped impact: state is not finite");
-        if (status != gbs_status::accepted) continue;
-        if (clipped) t = s_end;  // exactly, so the s part ends
-        ++r.steps;
-        if (y[0] > 0 && h_of(y) > 0) {
-          if (energy(y) < 0) {
-            r.outcome = impact_outcome::stick, r.e = 0;
-            r.contact_time = use_s ? Real(pow(t, Real(q))) : t;
-            return r;
-          }
-          if (use_s && !(t < s_end)) break;  // on to tau
-          continue;
-        }
-        // The switch h = 0 lies in this step: find the step length that reaches it.
-        const int cols = integ.last_columns();
-        auto h_after = [&](const Real& len) {
-          state out;
-          const bool ok = use_s ? integ.fixed_step(in_s, t0, y0, len, cols, out)
-                                : integ.fixed_step(in_tau, t0, y0, len, cols, out);
-          return ok && out[0] > 0 ? h_of(out) : Real(-1);
-        };
-        const Real len = bracketed_root(h_after, Real(0), Real(t - t0), "clamped impact: force-zero switch");
-        const bool ok = use_s ? integ.fixed_step(in_s, t0, y0, len, cols, y) : integ.fixed_step(in_tau, t0, y0, len, cols, y);
-        if (!ok) throw convergence_error("clamped impact: switch step left the contact");
-        t = t0 + len;
-        tau = use_s ? Real(pow(t, Real(q))) : t;
-        switched = true;
-        break;
-      }
-      if (!switched) tau = use_s ? Real(pow(t, Real(q))) : t;
-    }
-    first = false;
-    if (r.first_release_time == 0) r.first_release_time = tau;
-    r.release_overlap = y[0], r.release_speed = y[1];
-    const clamped_flight<Real> flight = clamped_free_flight(y[0], y[1], g, p, gamma_beta);
-    tau += flight.duration;
-    y = {flight.u, flight.v};
-    if (flight.leaves) {
-      r.e = -flight.v, r.contact_time = tau;
-      return r;
-    }
-    if (energy(y) < 0) {
-      r.outcome = impact_outcome::stick, r.e = 0, r.contact_time = tau;
-      return r;
-    }
-  }
+  return solver.solve();
 }
 
 }  // namespace detail

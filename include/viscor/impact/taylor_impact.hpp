@@ -1,30 +1,31 @@
 // One impact, integrated by Taylor series to the working precision, with exact
-// treatment of both ends of the contact (issue 3). solve() runs the phases below
-// in order; each is a function from the state it starts at to what happened (an
-// outcome) and the state it ends at (contact_state: overlap u, velocity v = u',
-// time tau, dissipated energy D). sigma is the variable of the endpoint system:
-// s = u^(1/Q) for rational exponents, ln u otherwise.
+// treatment of both ends of the contact. solve() runs the phases below in order
+// (named as in core/impact_phase.hpp); each is a function from the state it starts at
+// to what happened (an outcome) and the state it ends at (core/contact_state.hpp:
+// overlap u, velocity v = u', time tau, dissipated energy D). sigma is the variable
+// of the endpoint system: s = u^(1/Q) for rational exponents, ln u otherwise.
 //
-// 1. start_phase (u = 0, v = 1): the endpoint system in sigma
+// 1. compress_phase (u = 0, v = 1): the endpoint system in sigma
 //    (detail/impact_systems.hpp), forward until v has fallen to 4/5 of its
 //    peak, so that it stays far from the turning point v = 0, where
 //    dtau/dsigma = J/v is singular.
-// 2. time_phase, around maximal compression: tau as independent variable, u > 0
+// 2. turn_phase, around maximal compression: tau as independent variable, u > 0
 //    bounded away from 0, so u^alpha, u^beta are analytic. Events on the step
 //    polynomial: v = 0 (maximal compression), v = 0 again with u > 0 (the bead
-//    turns back: it sticks). It leaves for phase 3 as soon as the rest of the
+//    turns back: it sticks). It leaves for the exit as soon as the rest of the
 //    path provably keeps v <= v1/2 < 0 down to u = 0: with V = -v, over [0, u1]
 //        V(0) >= V1 - g+ u1 / min V - gamma u1^beta,
 //    so 4 g+ u1 + 2 gamma u1^beta V1 <= V1^2 is enough. Outcomes: leaves,
-//    spirals (2b), turns_back or rests (sticking, below), undamped (gamma = 0).
+//    spirals (2b), turns_back, creeps or sticks_at_unknown_time (sticking, below),
+//    undamped (gamma = 0), undecided (a stiff creep out of reach, 2c).
 // 2b. spiral_phase, g = 0 and alpha + 1 = 2 beta (linear, Tsuji), underdamped:
 //    after maximal compression, the scale-free spiral_system in ln u
 //    (impact_systems.hpp), so that near critical damping, where the bead creeps
 //    back along a slow spiral and e = exp(-pi xi/sqrt(1 - xi^2)) is tiny, e keeps
-//    its relative digits; phase 3 then runs on the problem rescaled to u = 1.
-// 3. End, in four steps. way_out: the endpoint system backwards to u = 0
-//    exactly (s = 0), or to a tiny u_eps; close_by_series: [0, u_eps] by the
-//    leading terms of the generalized series
+//    its relative digits; the exit then runs on the problem rescaled to u = 1.
+// 3. exit_phase: the endpoint system backwards to u = 0 exactly (s = 0), or to a
+//    tiny u_eps; then close_by_series: [0, u_eps] by the leading terms of the
+//    generalized series
 //        v(u) = v0 + g u/v0 - gamma u^beta - u^(alpha+1)/((alpha+1) v0) + O(u^2)
 //    (u_eps is chosen so that each retained term is below tol |v|, hence the
 //    neglected ones below tol^2); unscale_spiral (after 2b); choose_e.
@@ -37,7 +38,7 @@
 // Sticking (e = 0) is an outcome: v returns to 0 with u > 0 (an event), or the
 // state enters a region it provably never leaves without reaching u = 0 (the
 // sticking proofs, each returning the sticking_proof it established):
-// * creeps_to_rest, g = 0, after maximal compression, w = v + gamma u^beta > 0:
+// * creeps_to_origin, g = 0, after maximal compression, w = v + gamma u^beta > 0:
 //   the curve w = c gamma u^beta is a barrier if u^(alpha+1-2 beta) <=
 //   c(1-c) gamma^2 beta on (0, u] (possible when alpha + 1 >= 2 beta); the bead
 //   creeps into (0, 0) (for alpha = beta = 1 this is exactly gamma >= 2).
@@ -48,19 +49,20 @@
 //   creeps to u_eq.
 // * at_rest, g > 0: the state equals u_eq up to rounding: the turn, if any, is
 //   below the working precision.
-// The two creeps report contact_time = +infinity (proven: the bead never turns);
-// at_rest reports NaN (the bead may still turn back, later than the precision can
-// follow: linear law, gamma = 1.9999, g = 0.5 turns at tau = 316). stop_overlap is
-// the turning point u_s, or the rest position u_eq (0 for g = 0).
+// The two creeps end the turn as creeps, contact_time = +infinity (proven: the bead
+// never turns); at_rest as sticks_at_unknown_time, contact_time NaN (the bead may
+// still turn back, later than the precision can follow: linear law, gamma = 1.9999,
+// g = 0.5 turns at tau = 316). stop_overlap is the turning point u_s, or the rest
+// position u_eq (0 for g = 0).
 //
-// 2c. implicit_creep, issue 18 item 8: past maximal compression a strongly damped
-//    bead can creep along the slow manifold for far longer than the damping time that
-//    bounds the Taylor steps (stiff_creep). For g <= 0 (no turn back is possible) the
-//    creep is followed by the L-stable Radau IIA method (ode/radau_integrator.hpp;
-//    in ln u for g < 0 and work types wider than long double) until the exit test of
-//    phase 2 holds. For g > 0, or if those steps fail, the solve ends at once as
-//    undecided, with error_estimate a bound on e from the energy, which never
-//    increases: e <= sqrt(2E).
+// 2c. creep_phase: past maximal compression a strongly damped bead can creep along
+//    the slow manifold for far longer than the damping time that bounds the Taylor
+//    steps (creep_out_of_reach). For g <= 0 (no turn back is possible) the creep is
+//    followed by the L-stable Radau IIA method (ode/radau_integrator.hpp; in ln u for
+//    g < 0 and work types wider than long double) until the exit test of the turn
+//    holds. For g > 0, or if those steps fail, the solve ends at once as undecided,
+//    with error_estimate a bound on e from the energy, which never increases:
+//    e <= sqrt(2E) (energy_bound_on_e).
 //
 // The GBS solver (adaptive_impact.hpp) makes its own exit, barrier and energy
 // arguments on purpose: the two solvers share no phase code (a shared proof
@@ -68,7 +70,9 @@
 #pragma once
 
 #include <viscor/core/contact_law.hpp>
+#include <viscor/core/contact_state.hpp>
 #include <viscor/core/exceptions.hpp>
+#include <viscor/core/impact_phase.hpp>
 #include <viscor/core/impact_result.hpp>
 #include <viscor/core/parameters.hpp>
 #include <viscor/core/real_io.hpp>
@@ -94,57 +98,12 @@ namespace viscor {
 
 namespace detail {
 
-/// A point of the contact: overlap u, velocity v = u', time tau, dissipated energy D.
-template <class Real>
-struct contact_state {
-  Real u, v, tau, D;
-};
-
 /// What a sticking proof of taylor_impact_solver established (file comment).
 enum class sticking_proof {
   none,                   ///< nothing
   creeps_to_origin,       ///< g = 0: under the barrier w = c gamma u^beta the bead creeps into (0, 0)
   creeps_to_equilibrium,  ///< g > 0: in a sector about u_eq the bead creeps to u_eq
   at_rest,                ///< g > 0: the state is u_eq up to rounding
-};
-
-/// How the time phase ended.
-enum class time_outcome {
-  leaves,      ///< past maximal compression, v <= v1/2 < 0 provably down to u = 0: the way out follows
-  spirals,     ///< g = 0, alpha + 1 = 2 beta, underdamped, past maximal compression: the spiral phase follows
-  turns_back,  ///< v = 0 again with u > 0: the bead sticks at the turning point
-  rests,       ///< a sticking proof holds (time_phase_end::proof)
-  undamped,    ///< gamma = 0: time-reversible, e = 1 exactly
-  stiff_creep,  ///< creeping out on the slow manifold, out of reach of explicit steps: undecided
-};
-
-template <class Real>
-struct time_phase_end {
-  time_outcome outcome = time_outcome::leaves;
-  contact_state<Real> state{};  ///< where the phase ended (unused for undamped)
-  sticking_proof proof = sticking_proof::none;  ///< for rests
-  bool past_max_compression = false;
-  bool at_contact_end = false;  ///< leaves: the state is already at u = 0 (implicit_creep landed there)
-  /// tau and u at maximal compression (+infinity and u_eq when the bead rests before it)
-  Real tau_max = 0, u_max = 0;
-};
-
-/// How the start phase ended: the state where it stopped, and whether a sticking
-/// proof (creeps_to_equilibrium_from_below) already holds there.
-template <class Real>
-struct start_phase_end {
-  contact_state<Real> state{};
-  bool rests = false;
-};
-
-/// Where the spiral phase hands over to the way out: the state of the problem
-/// rescaled to u = 1, and what unscale_spiral needs to scale back.
-template <class Real>
-struct spiral_exit {
-  contact_state<Real> scaled;  ///< u = 1, v = r = v/u^c, tau = 0, D = 0
-  Real log_scale;              ///< ln lambda, lambda the overlap at the exit
-  Real tau_before, D_before;   ///< tau and D of the path up to the exit
-  Real error;                  ///< relative error of e so far (the way out adds tol per step)
 };
 
 /// Which identity choose_e took e from.
@@ -162,6 +121,43 @@ class taylor_impact_solver {
   using es = endpoint_system<Real>;
   using ss = spiral_system<Real>;
   using state = contact_state<Real>;
+
+  /// How the compress phase ended: the state where it stopped, and whether a sticking
+  /// proof (creeps_to_equilibrium_from_below) already holds there.
+  struct compress_end {
+    state at{};
+    bool creeps = false;
+  };
+
+  /// How the turn phase ended (the GBS solver's turn outcomes, and two of its own:
+  /// spirals and undamped).
+  enum class turn_outcome {
+    leaves,      ///< past maximal compression, v <= v1/2 < 0 provably down to u = 0: the exit follows
+    spirals,     ///< g = 0, alpha + 1 = 2 beta, underdamped, past maximal compression: the spiral phase follows
+    turns_back,  ///< v = 0 again with u > 0: the bead sticks at the turning point
+    creeps,      ///< a barrier or a trapping sector holds: the bead sticks, contact_time = +infinity
+    sticks_at_unknown_time,  ///< at rest at u_eq up to rounding: it sticks, contact_time NaN
+    undamped,    ///< gamma = 0: time-reversible, e = 1 exactly
+    undecided,   ///< creeping out on the slow manifold, out of reach of explicit steps, g > 0 or the creep failed
+  };
+
+  struct turn_end {
+    turn_outcome outcome = turn_outcome::leaves;
+    state at{};  ///< where the phase ended (unused for undamped)
+    bool past_max_compression = false;
+    bool at_contact_end = false;  ///< leaves: the state is already at u = 0 (the creep landed there)
+    /// tau and u at maximal compression (+infinity and u_eq when the bead creeps before it)
+    Real tau_max = 0, u_max = 0;
+  };
+
+  /// Where the spiral phase hands over to the exit: the state of the problem
+  /// rescaled to u = 1, and what unscale_spiral needs to scale back.
+  struct spiral_end {
+    state scaled;               ///< u = 1, v = r = v/u^c, tau = 0, D = 0
+    Real log_scale;             ///< ln lambda, lambda the overlap at the exit
+    Real tau_before, D_before;  ///< tau and D of the path up to the exit
+    Real error;                 ///< relative error of e so far (the exit adds tol per step)
+  };
 
  public:
   taylor_impact_solver(const contact_law& law, const Real& gamma, const Real& g, const solve_options<Real>& options)
@@ -189,59 +185,25 @@ class taylor_impact_solver {
     impact_result<Real> result;
     result.method = integration_method::taylor;
 
-    const start_phase_end<Real> start = start_phase(end_sys, end_int);
-    const time_phase_end<Real> around = start.rests ? rests_while_compressing(start.state) : time_phase(time_int, start.state);
+    const compress_end start = compress_phase(end_sys, end_int);
+    const turn_end around = start.creeps ? creeps_while_compressing(start.at) : turn_phase(time_int, start.at);
     result.time_of_max_compression = around.tau_max;
     result.max_compression = around.u_max;
-    switch (around.outcome) {
-      case time_outcome::undamped:
-        // NOTE: without damping the motion is time-reversible: T_f = 2 tau_max
-        // and e = 1 exactly, however ill-conditioned the way back is (g = 1e12).
-        result.outcome = impact_outcome::rebound;
-        result.e = 1, result.one_minus_e = 0, result.energy_residual = 0;
-        result.contact_time = 2 * around.tau_max;
-        result.error_estimate = 0;
-        return finish(result);
-      case time_outcome::turns_back:
-        stick(result, around.state, around.state.tau, around.state.u, true);
-        return finish(result);
-      case time_outcome::rests: {
-        // NOTE: at rest after maximal compression the energy check of a turn applies: E = P(u_eq) < 0.
-        const bool at_rest = around.proof == sticking_proof::at_rest;
-        stick(result, around.state,
-              at_rest ? std::numeric_limits<Real>::quiet_NaN() : std::numeric_limits<Real>::infinity(), m_u_eq,
-              at_rest && around.past_max_compression);
-        return finish(result);
-      }
-      case time_outcome::stiff_creep: {
-        // NOTE: E = v^2/2 + u^(alpha+1)/(alpha+1) - g u never increases and is e^2/2 at
-        // u = 0, so e <= sqrt(2E); E is taken with the error the steps carry (choose_e's rule).
-        using std::pow;
-        using std::sqrt;
-        const state& at = around.state;
-        const Real two_E = at.v * at.v + 2 * pow(at.u, m_c.alpha_plus_one) / m_c.alpha_plus_one - 2 * m_c.g * at.u;
-        const Real carried = Real(m_steps) * m_tol * m_speed_scale * m_speed_scale;
-        result.outcome = impact_outcome::undecided;
-        result.e = 0, result.one_minus_e = 1, result.energy_residual = 0;
-        result.contact_time = std::numeric_limits<Real>::quiet_NaN();
-        result.error_estimate = 2 * sqrt(Real((two_E > 0 ? two_E : Real(0)) + carried));
-        return finish(result);
-      }
-      case time_outcome::leaves:
-      case time_outcome::spirals:
-        break;
+    if (around.outcome != turn_outcome::leaves && around.outcome != turn_outcome::spirals) {
+      ends_in_turn(result, around);
+      return finish(result);
     }
 
-    std::optional<spiral_exit<Real>> spiral;
-    if (around.outcome == time_outcome::spirals) {
+    std::optional<spiral_end> spiral;
+    if (around.outcome == turn_outcome::spirals) {
       ss spiral_sys(m_c, taylor_order(m_tol));
       taylor_integrator<Real, ss> spiral_int(spiral_sys, m_tol);
-      spiral = spiral_phase(spiral_int, around.state, around.u_max);
+      spiral = spiral_phase(spiral_int, around.at, around.u_max);
     }
     Real* spiral_error = spiral ? &spiral->error : nullptr;
-    state end = around.state;
+    state end = around.at;
     if (!around.at_contact_end) {
-      end = way_out(end_int, spiral ? spiral->scaled : around.state, spiral_error);
+      end = exit_phase(end_int, spiral ? spiral->scaled : around.at, spiral_error);
       if (!m_c.use_root_variable) end = close_by_series(end);
     }
     if (spiral) end = unscale_spiral(end, *spiral);
@@ -256,18 +218,62 @@ class taylor_impact_solver {
   }
 
  private:
-  // ---- phase 1 ----
+  // The result of an impact that ends in the turn phase (any outcome but leaves and spirals).
+  void ends_in_turn(impact_result<Real>& result, const turn_end& around) const {
+    switch (around.outcome) {
+      case turn_outcome::undamped:
+        // NOTE: without damping the motion is time-reversible: T_f = 2 tau_max
+        // and e = 1 exactly, however ill-conditioned the way back is (g = 1e12).
+        result.outcome = impact_outcome::rebound;
+        result.e = 1, result.one_minus_e = 0, result.energy_residual = 0;
+        result.contact_time = 2 * around.tau_max;
+        result.error_estimate = 0;
+        return;
+      case turn_outcome::turns_back:
+        stick(result, around.at, around.at.tau, around.at.u, true);
+        return;
+      case turn_outcome::creeps:
+        stick(result, around.at, std::numeric_limits<Real>::infinity(), m_u_eq, false);
+        return;
+      case turn_outcome::sticks_at_unknown_time:
+        // NOTE: at rest after maximal compression the energy check of a turn applies: E = P(u_eq) < 0.
+        stick(result, around.at, std::numeric_limits<Real>::quiet_NaN(), m_u_eq, around.past_max_compression);
+        return;
+      case turn_outcome::undecided:
+        result.outcome = impact_outcome::undecided;
+        result.e = 0, result.one_minus_e = 1, result.energy_residual = 0;
+        result.contact_time = std::numeric_limits<Real>::quiet_NaN();
+        result.error_estimate = energy_bound_on_e(around.at);
+        return;
+      case turn_outcome::leaves:
+      case turn_outcome::spirals:
+        return;
+    }
+  }
+
+  // e <= sqrt(2E): E = v^2/2 + u^(alpha+1)/(alpha+1) - g u never increases and is
+  // e^2/2 at u = 0; E is taken with the error the steps carry (choose_e's rule), and
+  // the bound doubled.
+  Real energy_bound_on_e(const state& at) const {
+    using std::pow;
+    using std::sqrt;
+    const Real two_E = at.v * at.v + 2 * pow(at.u, m_c.alpha_plus_one) / m_c.alpha_plus_one - 2 * m_c.g * at.u;
+    const Real carried = Real(m_steps) * m_tol * m_speed_scale * m_speed_scale;
+    return 2 * sqrt(Real((two_E > 0 ? two_E : Real(0)) + carried));
+  }
+
+  // ---- compress ----
   // Takes the endpoint system and its integrator; starts at first contact
   // (u = 0, v = 1, tau = D = 0) and returns the state where v has fallen below
   // m_switch_speed times its peak (u > 0, v > 0: still compressing), or where the
-  // bead provably creeps up to u_eq (rests: creeps_to_equilibrium_from_below);
+  // bead provably creeps up to u_eq (creeps: creeps_to_equilibrium_from_below);
   // a step it cannot take throws convergence_error.
-  // NOTE (issue 18 item 8): under a load g > 0 with strong damping the bead is pushed
-  // in at the terminal speed ~ g/(gamma beta u^(beta-1)) and creeps up to u_eq, v
-  // never falling to 4/5 of its peak: the steps, bounded by the fast damping scale,
-  // would number ~ gamma^2 (linear law, gamma = 1e4, g = 1e6: over 1e8). The
-  // trapping sector proves the creep as soon as the state enters it, here as in phase 2.
-  start_phase_end<Real> start_phase(const es& sys, taylor_integrator<Real, es>& integ) {
+  // NOTE: under a load g > 0 with strong damping the bead is pushed in at the
+  // terminal speed ~ g/(gamma beta u^(beta-1)) and creeps up to u_eq, v never
+  // falling to 4/5 of its peak: the steps, bounded by the fast damping scale, would
+  // number ~ gamma^2 (linear law, gamma = 1e4, g = 1e6: over 1e8). The trapping
+  // sector proves the creep as soon as the state enters it, here as in the turn.
+  compress_end compress_phase(const es& sys, taylor_integrator<Real, es>& integ) {
     using std::log;
     using std::pow;
     const auto& c = m_c;
@@ -277,7 +283,7 @@ class taylor_impact_solver {
       sigma = 0;
       x[es::v] = 1, x[es::tau] = 0, x[es::D] = 0;
     } else {
-      const Real u = gap(Real(1));
+      const Real u = series_limit(Real(1));
       sigma = log(u);
       x[es::v] = 1 + c.g * u - c.gamma * pow(u, c.beta) - pow(u, c.alpha_plus_one) / c.alpha_plus_one;
       x[es::tau] = u;
@@ -318,27 +324,26 @@ class taylor_impact_solver {
     return {state{sys.u_of(sigma), x[es::v], x[es::tau], x[es::D]}, false};
   }
 
-  // Phase 1 ended in the trapping sector below u_eq: the bead creeps up to u_eq
-  // without reaching it (no maximal compression at finite time) and sticks.
-  time_phase_end<Real> rests_while_compressing(const state& at) const {
-    time_phase_end<Real> end;
-    end.outcome = time_outcome::rests;
-    end.state = at;
-    end.proof = sticking_proof::creeps_to_equilibrium;
+  // The compress phase ended in the trapping sector below u_eq: the bead creeps up to
+  // u_eq without reaching it (no maximal compression at finite time) and sticks.
+  turn_end creeps_while_compressing(const state& at) const {
+    turn_end end;
+    end.outcome = turn_outcome::creeps;
+    end.at = at;
     end.tau_max = std::numeric_limits<Real>::infinity();
     end.u_max = m_u_eq;
     return end;
   }
 
-  // ---- phase 2 ----
-  // Takes the state start_phase returned (u > 0, v > 0) and integrates in tau
-  // through maximal compression. Returns how the phase ended (time_outcome), the
+  // ---- turn ----
+  // Takes the state compress_phase returned (u > 0, v > 0) and integrates in tau
+  // through maximal compression. Returns how the phase ended (turn_outcome), the
   // state there, whether it had passed maximal compression, and tau and u at
-  // maximal compression; a rests outcome carries the sticking proof.
-  time_phase_end<Real> time_phase(taylor_integrator<Real, ts>& integ, const state& from) {
+  // maximal compression.
+  turn_end turn_phase(taylor_integrator<Real, ts>& integ, const state& from) {
     std::vector<Real> y{from.u, from.v, from.D}, y1(3);
     Real tau = from.tau;
-    time_phase_end<Real> end;
+    turn_end end;
     std::size_t creep_steps = 0;  // steps since maximal compression
     for (;;) {
       const Real h = time_step(integ, tau, y, y1, !end.past_max_compression);
@@ -349,7 +354,7 @@ class taylor_impact_solver {
         end.u_max = integ.value(ts::u, t);
         end.past_max_compression = true;
         if (m_c.gamma == 0) {
-          end.outcome = time_outcome::undamped;
+          end.outcome = turn_outcome::undamped;
           return end;
         }
       } else if (end.past_max_compression && y1[ts::v] >= 0) {
@@ -357,57 +362,65 @@ class taylor_impact_solver {
         tau += t;
         integ.values(y, t);
         y[ts::v] = 0;
-        end.state = state{y[ts::u], y[ts::v], tau, y[ts::D]};
-        end.outcome = time_outcome::turns_back;
+        end.at = state{y[ts::u], y[ts::v], tau, y[ts::D]};
+        end.outcome = turn_outcome::turns_back;
         return end;
       }
       tau += h;
       y.swap(y1);
       note_speed(y[ts::v]);
-      end.state = state{y[ts::u], y[ts::v], tau, y[ts::D]};
-      if (!end.past_max_compression) {
-        end.proof = creeps_to_equilibrium_from_below(end.state);
-        if (end.proof == sticking_proof::none) end.proof = at_rest(end.state);
-        if (end.proof != sticking_proof::none) {
-          end.tau_max = std::numeric_limits<Real>::infinity();
-          end.u_max = m_u_eq;
-          end.outcome = time_outcome::rests;
-          return end;
-        }
-      } else {
-        if (leaves_without_turning(end.state, end.u_max)) {
-          end.outcome = time_outcome::leaves;
-          return end;
-        }
-        end.proof = creeps_to_rest(end.state);
-        if (end.proof == sticking_proof::none) end.proof = at_rest(end.state);
-        if (end.proof != sticking_proof::none) {
-          end.outcome = time_outcome::rests;
-          return end;
-        }
-        if (enters_spiral(end.state)) {
-          end.outcome = time_outcome::spirals;
-          return end;
-        }
-        if (++creep_steps > m_creep_min_steps) m_crept = true;  // a long creep: see choose_e
-        if (creep_steps > m_creep_min_steps && stiff_creep(end.state, h)) {
-          // g <= 0: the bead cannot turn back (u'' = g - u^alpha < 0 at v = 0), so no
-          // event is missed by the implicit steps; g > 0 is left undecided.
-          const std::optional<state> out = m_c.g <= 0 ? implicit_creep(end.state, end.u_max) : std::nullopt;
-          if (!out) {
-            end.outcome = time_outcome::stiff_creep;
-            return end;
-          }
-          end.state = *out;
-          end.at_contact_end = out->u == 0;
-          end.outcome = time_outcome::leaves;
-          return end;
-        }
-      }
+      end.at = state{y[ts::u], y[ts::v], tau, y[ts::D]};
+      if (!end.past_max_compression ? sticks_before_compression(end) : ends_after_compression(end, h, creep_steps))
+        return end;
     }
   }
 
-  // One step of the time phase from (tau, y): the Jorba-Zou step, capped so that
+  // After a turn step before maximal compression: whether the bead sticks at end.at
+  // (creeps up to u_eq, or rests there); if so, end says how.
+  bool sticks_before_compression(turn_end& end) const {
+    sticking_proof proof = creeps_to_equilibrium_from_below(end.at);
+    if (proof == sticking_proof::none) proof = at_rest(end.at);
+    if (proof == sticking_proof::none) return false;
+    end.tau_max = std::numeric_limits<Real>::infinity();
+    end.u_max = m_u_eq;
+    end.outcome = proof == sticking_proof::at_rest ? turn_outcome::sticks_at_unknown_time : turn_outcome::creeps;
+    return true;
+  }
+
+  // After a turn step past maximal compression, at end.at after a step h, creep_steps
+  // such steps so far: whether the turn ends here (it leaves, sticks, spirals, or a
+  // stiff creep follows); if so, end says how.
+  bool ends_after_compression(turn_end& end, const Real& h, std::size_t& creep_steps) {
+    if (leaves_without_turning(end.at, end.u_max)) {
+      end.outcome = turn_outcome::leaves;
+      return true;
+    }
+    sticking_proof proof = m_c.g > 0 ? creeps_to_equilibrium_from_above(end.at) : creeps_to_origin(end.at);
+    if (proof == sticking_proof::none) proof = at_rest(end.at);
+    if (proof != sticking_proof::none) {
+      end.outcome = proof == sticking_proof::at_rest ? turn_outcome::sticks_at_unknown_time : turn_outcome::creeps;
+      return true;
+    }
+    if (enters_spiral(end.at)) {
+      end.outcome = turn_outcome::spirals;
+      return true;
+    }
+    if (++creep_steps > m_creep_min_steps) m_crept = true;  // a long creep: see choose_e
+    if (!(creep_steps > m_creep_min_steps && creep_out_of_reach(end.at, h))) return false;
+    // g <= 0: the bead cannot turn back (u'' = g - u^alpha < 0 at v = 0), so no
+    // event is missed by the implicit steps; g > 0 is left undecided.
+    const std::optional<state> out = m_c.g <= 0 ? creep_phase(end.at, end.u_max) : std::nullopt;
+    if (!out) {
+      end.outcome = turn_outcome::undecided;
+      return true;
+    }
+    end.at = *out;
+    end.at_contact_end = out->u == 0;
+    end.outcome = turn_outcome::leaves;
+    return true;
+  }
+
+  // One step of the turn phase from (tau, y): the Jorba-Zou step, capped so that
   // it cannot span two zeros of v (nor, past maximal compression, more than halve
   // u), halved until the state y1 it reaches is acceptable. Returns the step h;
   // y1 holds the state at tau + h.
@@ -440,7 +453,7 @@ class taylor_impact_solver {
     return h;
   }
 
-  // Phase 2 -> 3: the rest of the path keeps v <= v1/2 < 0 (see the file comment).
+  // turn -> exit: the rest of the path keeps v <= v1/2 < 0 (see the file comment).
   bool leaves_without_turning(const state& s, const Real& u_max) const {
     using std::pow;
     if (!(s.v < 0) || s.u > u_max * m_switch_overlap) return false;
@@ -450,31 +463,31 @@ class taylor_impact_solver {
     return lhs <= V * V;
   }
 
-  // Phase 2, issue 18 item 8: after maximal compression with strong damping the bead
-  // creeps out (or in) along the slow manifold v ~ (g - u^alpha)/(gamma beta u^(beta-1))
-  // over the slow time u/|v|, while the steps stay bounded by the fast damping time
+  // turn -> creep: after maximal compression with strong damping the bead creeps out
+  // (or in) along the slow manifold v ~ (g - u^alpha)/(gamma beta u^(beta-1)) over the
+  // slow time u/|v|, while the steps stay bounded by the fast damping time
   // 1/(gamma beta u^(beta-1)): a stiff motion. When that ratio exceeds 1000 and the
   // steps still needed at the current step h and speed, (u/|v|)/h, exceed
-  // m_creep_step_limit, the solve ends as undecided now, rather than exhausting the
-  // step budget or running for minutes (linear law, gamma = 1e10, g = -1: ~1e10 steps).
-  bool stiff_creep(const state& s, const Real& h) const {
+  // m_creep_step_limit, the explicit steps stop here, rather than exhausting the step
+  // budget or running for minutes (linear law, gamma = 1e10, g = -1: ~1e10 steps).
+  bool creep_out_of_reach(const state& s, const Real& h) const {
     using std::abs;
     using std::pow;
     if (!(s.v < 0) || m_c.gamma == 0) return false;
     const Real slow_time = s.u / abs(s.v);
     const Real damping = m_c.beta_is_one ? m_c.gamma_beta : Real(m_c.gamma_beta * pow(s.u, m_c.beta - 1));
     // NOTE: u/|v| is the slow time of one e-fold; a creep to u = 0 at g = 0 lasts many
-    // (Kuwabara-Kono, gamma = 1e3: 19411 explicit steps, 5.8 s at 50 digits, none of
-    // them with 20000 to go), so where the implicit steps take over (g <= 0) a tenth
-    // of the limit starts them; for g > 0 the test ends the solve, so it stays.
+    // (Kuwabara-Kono, gamma = 1e3: 19411 explicit steps at 50 digits, none of them with
+    // 20000 to go), so where the implicit steps take over (g <= 0) a tenth of the limit
+    // starts them; for g > 0 the test ends the solve, so it stays.
     const Real limit = m_c.g <= 0 ? m_creep_step_limit / 10 : m_creep_step_limit;
     return slow_time * damping > 1000 && slow_time > h * limit;
   }
 
-  // ---- phase 2c: the stiff creep out, g <= 0 (issue 18 item 8) ----
-  // Takes the state where stiff_creep held (past maximal compression, v < 0) and
+  // ---- creep: the stiff creep out, g <= 0 ----
+  // Takes the state where creep_out_of_reach held (past maximal compression, v < 0) and
   // u_max; integrates the creep by Radau IIA (ode/radau_integrator.hpp, order 2s - 1
-  // with s = max(3, (digits + 2)/3) stages) until the exit test of phase 2 holds, and
+  // with s = max(3, (digits + 2)/3) stages) until the exit test of the turn holds, and
   // returns that state; nothing if the steps fail (a step shorter than the rounding of
   // its variable): the solve is then undecided.
   // The variable: tau, on (u, v, D); or, for g < 0 in work types wider than long
@@ -482,95 +495,65 @@ class taylor_impact_solver {
   // tau. Pulled out, the bead reaches u = 0 on the slow manifold in finite time
   // (u^beta ~ the time left, for beta > 1): in tau the Taylor radius is that time
   // left and the steps a few per cent of it, while the creep is smooth in ln u.
-  // NOTE, 50 digits, gamma = 1e10, g = -1e-3: Tsuji 2427 steps in tau (4.9 s), 613 in
-  // rho (1.5 s), the same e to 52 digits; every law but the linear one 1.5-4x faster at
-  // g < 0 (linear: 0.17 -> 0.29 s, u is linear in tau there). At g = 0 rho was slower
-  // (Kuwabara-Kono 1e8: 1.3 -> 1.9 s), and carrying tau as a fourth component in tau
-  // cost more steps (793 -> 879 at Kuwabara-Kono 1e10, g = 0), hence two forms.
-  // Double and long double keep tau, where the whole solve takes at most ~0.2 s (not
-  // tried in rho: the GBS solver's creep in ln u stalls in long double, see
-  // adaptive_impact.hpp).
-  std::optional<state> implicit_creep(const state& from, const Real& u_max) {
+  // NOTE: rho takes about a quarter of the steps of tau at 50 digits and g < 0 (Tsuji,
+  // gamma = 1e10, g = -1e-3), the same e to 52 digits; at g = 0 rho was slower, and
+  // carrying tau as a fourth component in tau cost more steps, hence two forms. Double
+  // and long double keep tau, where the whole creep is short (not tried in rho: the GBS
+  // solver's creep in ln u stalls in long double, see adaptive_impact.hpp).
+  // Measurements: docs/performance.md.
+  std::optional<state> creep_phase(const state& from, const Real& u_max) {
     if (m_c.g < 0 && binary_digits<Real>() > std::numeric_limits<long double>::digits)
       return creep_steps<4>(from, u_max);
     return creep_steps<3>(from, u_max);
   }
 
-  // N = 3: (u, v, D) in tau; N = 4: (u, v, D, tau) in rho = -ln u (implicit_creep).
+  // The creep's equations for the Radau steps: N = 3, (u, v, D) in tau; N = 4,
+  // (u, v, D, tau) in rho = -ln u. rates() are those in tau, step_rates() those in the
+  // step variable; jacobian() is that of step_rates.
   template <std::size_t N>
-  std::optional<state> creep_steps(const state& from, const Real& u_max) {
-    using std::abs;
-    using std::pow;
-    const auto& c = m_c;
+  class creep_system {
+   public:
     using vec = std::array<Real, N>;
-    constexpr bool in_log = N == 4;
-    const int stages = std::max(3, (decimal_digits<Real>() + 2) / 3);
-    // NOTE: the step-doubling difference carries rounding of a few ulps: a tolerance
-    // below 16 ulps would shrink the steps to nothing.
-    const Real floor = 16 * epsilon<Real>();
-    radau_integrator<Real, N> radau(stages, m_tol > floor ? m_tol : floor);
-    Real damping, u_a, u_b2;  // scratch: gamma beta u^(beta-1), u^(alpha-1), u^(beta-2)
-    // NOTE: exponents that are multiples of 1/4 (every named law) from square roots
-    // and products, a few roundings instead of pow's exp and log: 36% of a 50-digit
-    // creep was in pow (Hunt-Crossley, gamma = 1e6, g = -1e-3).
-    auto in_quarters = [](const Real& p) -> int {
-      using std::floor;
-      const Real q = 4 * p;
-      return q == floor(q) && abs(q) <= 64 ? static_cast<int>(q) : std::numeric_limits<int>::min();
-    };
-    const int qa = in_quarters(c.alpha - 1), qb = in_quarters(c.beta - 2);
-    const bool by_roots = qa != std::numeric_limits<int>::min() && qb != std::numeric_limits<int>::min();
-    const bool fourth_root = by_roots && ((qa % 2) != 0 || (qb % 2) != 0);
-    auto quarter_power = [](const Real& u, const Real& r2, const Real& r4, int k) -> Real {
-      const int m = k < 0 ? -k : k;
-      Real x = 1;
-      for (int i = 0; i < m / 4; ++i) x *= u;
-      if (m % 4 >= 2) x *= r2;
-      if (m % 2 == 1) x *= r4;
-      return k < 0 ? Real(1 / x) : x;
-    };
-    auto powers = [&](const Real& u) {
-      using std::sqrt;
-      if (by_roots) {
-        const Real r2 = sqrt(u), r4 = fourth_root ? Real(sqrt(r2)) : Real(0);
-        u_a = quarter_power(u, r2, r4, qa);
-        u_b2 = quarter_power(u, r2, r4, qb);
-      } else {
-        u_a = c.alpha_is_one ? Real(1) : Real(pow(u, c.alpha - 1));
-        u_b2 = c.beta_is_one ? Real(1 / u) : Real(pow(u, c.beta - 2));
-      }
-      damping = c.gamma_beta * u_b2 * u;
-    };
-    auto rate = [&](const vec& y, vec& d) {
+    static constexpr bool in_log = N == 4;
+
+    explicit creep_system(const impact_constants<Real>& c) : m_c(c) {
+      qa = in_quarters(c.alpha - 1), qb = in_quarters(c.beta - 2);
+      by_roots = qa != std::numeric_limits<int>::min() && qb != std::numeric_limits<int>::min();
+      fourth_root = by_roots && ((qa % 2) != 0 || (qb % 2) != 0);
+    }
+
+    bool rates(const vec& y, vec& d) {
       if (!(y[0] > 0) || (in_log && !(y[1] < 0))) return false;
       powers(y[0]);
       d[0] = y[1];
-      d[1] = c.g - u_a * y[0] - damping * y[1];
+      d[1] = m_c.g - u_a * y[0] - damping * y[1];
       d[2] = 2 * damping * y[1] * y[1];
       if constexpr (in_log) d[3] = 1;
       return true;
-    };
-    auto f = [&](const vec& y, vec& d) {
-      if (!rate(y, d)) return false;
+    }
+
+    bool step_rates(const vec& y, vec& d) {
+      if (!rates(y, d)) return false;
       if constexpr (in_log) {
         const Real dtau = -y[0] / y[1];
         for (Real& x : d) x *= dtau;
       }
       return true;
-    };
-    auto jacobian = [&](const vec& y, std::array<vec, N>& J) {
+    }
+
+    void jacobian(const vec& y, std::array<vec, N>& J) {
       powers(y[0]);
-      const Real damping_slope = c.gamma_beta * (c.beta - 1) * u_b2;  // d/du of gamma beta u^(beta-1)
+      const Real damping_slope = m_c.gamma_beta * (m_c.beta - 1) * u_b2;  // d/du of gamma beta u^(beta-1)
       for (vec& row : J) row.fill(Real(0));
       J[0][1] = 1;
-      J[1][0] = -c.alpha * u_a - damping_slope * y[1];
+      J[1][0] = -m_c.alpha * u_a - damping_slope * y[1];
       J[1][1] = -damping;
       J[2][0] = 2 * damping_slope * y[1] * y[1];
       J[2][1] = 4 * damping * y[1];
       if constexpr (in_log) {
         // d(r tau')/dy = tau' dr/dy + r (dtau'/dy)^T, tau' = -u/v
         vec r;
-        rate(y, r);
+        rates(y, r);
         const Real dtau = -y[0] / y[1], by_u = -1 / y[1], by_v = y[0] / (y[1] * y[1]);
         for (std::size_t i = 0; i < N; ++i) {
           for (Real& x : J[i]) x *= dtau;
@@ -578,7 +561,61 @@ class taylor_impact_solver {
           J[i][1] += r[i] * by_v;
         }
       }
-    };
+    }
+
+   private:
+    // NOTE: exponents that are multiples of 1/4 (every named law) from square roots
+    // and products, a few roundings instead of pow's exp and log: pow was over a third
+    // of a 50-digit creep.
+    static int in_quarters(const Real& p) {
+      using std::abs;
+      using std::floor;
+      const Real q = 4 * p;
+      return q == floor(q) && abs(q) <= 64 ? static_cast<int>(q) : std::numeric_limits<int>::min();
+    }
+    static Real quarter_power(const Real& u, const Real& r2, const Real& r4, int k) {
+      const int m = k < 0 ? -k : k;
+      Real x = 1;
+      for (int i = 0; i < m / 4; ++i) x *= u;
+      if (m % 4 >= 2) x *= r2;
+      if (m % 2 == 1) x *= r4;
+      return k < 0 ? Real(1 / x) : x;
+    }
+    // damping = gamma beta u^(beta-1), u_a = u^(alpha-1), u_b2 = u^(beta-2).
+    void powers(const Real& u) {
+      using std::pow;
+      using std::sqrt;
+      if (by_roots) {
+        const Real r2 = sqrt(u), r4 = fourth_root ? Real(sqrt(r2)) : Real(0);
+        u_a = quarter_power(u, r2, r4, qa);
+        u_b2 = quarter_power(u, r2, r4, qb);
+      } else {
+        u_a = m_c.alpha_is_one ? Real(1) : Real(pow(u, m_c.alpha - 1));
+        u_b2 = m_c.beta_is_one ? Real(1 / u) : Real(pow(u, m_c.beta - 2));
+      }
+      damping = m_c.gamma_beta * u_b2 * u;
+    }
+
+    const impact_constants<Real>& m_c;
+    int qa, qb;
+    bool by_roots, fourth_root;
+    Real damping, u_a, u_b2;  // scratch of powers()
+  };
+
+  // N = 3: (u, v, D) in tau; N = 4: (u, v, D, tau) in rho = -ln u (creep_phase).
+  template <std::size_t N>
+  std::optional<state> creep_steps(const state& from, const Real& u_max) {
+    using std::abs;
+    using vec = std::array<Real, N>;
+    constexpr bool in_log = N == 4;
+    const int stages = std::max(3, (decimal_digits<Real>() + 2) / 3);
+    // NOTE: the step-doubling difference carries rounding of a few ulps: a tolerance
+    // below 16 ulps would shrink the steps to nothing.
+    const Real floor = 16 * epsilon<Real>();
+    radau_integrator<Real, N> radau(stages, m_tol > floor ? m_tol : floor);
+    creep_system<N> sys(m_c);
+    auto f = [&sys](const vec& y, vec& d) { return sys.step_rates(y, d); };
+    auto jacobian = [&sys](const vec& y, std::array<vec, N>& J) { sys.jacobian(y, J); };
     vec y;
     y[0] = from.u, y[1] = from.v, y[2] = from.D;
     Real tau = from.tau, h = in_log ? Real(1) / 64 : Real(from.u / abs(from.v) / 64), taken = 0;
@@ -590,7 +627,7 @@ class taylor_impact_solver {
       vec scales;
       for (std::size_t i = 0; i < N; ++i) scales[i] = abs(y[i]) > 0 ? Real(abs(y[i])) : Real(1);
       // NOTE: at most half the slow time u/|v| per step (in rho: ln 2): u falls at
-      // most about halfway, and the way out does not start at a u too tiny for its steps.
+      // most about halfway, and the exit does not start at a u too tiny for its steps.
       const Real cap = in_log ? Real(boost::math::constants::ln_two<Real>()) : Real(y[0] / (2 * abs(y[1])));
       if (h > cap) h = cap;
       count_step();
@@ -609,17 +646,23 @@ class taylor_impact_solver {
         if (!endpoint_series_overflow(here)) return here;
         landing = true;
       }
-      if (landing) {
-        // On towards u = 0, u about halving per step (the cap above), until the
-        // rest of the way, u/|v| in time, changes v and D by less than tol relative
-        // to first order (their rates times u/|v|); then the first-order close.
-        vec d;
-        rate(y, d);
-        const Real rest = y[0] / abs(y[1]);
-        if (abs(d[1]) * rest <= m_tol * abs(y[1]) && abs(d[2]) * rest <= m_tol * abs(y[2]))
-          return state{Real(0), Real(y[1] + d[1] * rest), Real(tau + rest), Real(y[2] + d[2] * rest)};
-      }
+      if (landing)
+        if (const std::optional<state> end = landed(sys, y, tau)) return end;
     }
+  }
+
+  // Landing on u = 0 (creep_steps), u about halving per step: once the rest of the
+  // way, u/|v| in time, changes v and D by less than tol relative to first order
+  // (their rates times u/|v|), the state at u = 0 by the first-order close.
+  template <std::size_t N>
+  std::optional<state> landed(creep_system<N>& sys, const std::array<Real, N>& y, const Real& tau) const {
+    using std::abs;
+    std::array<Real, N> d;
+    sys.rates(y, d);
+    const Real rest = y[0] / abs(y[1]);
+    if (abs(d[1]) * rest <= m_tol * abs(y[1]) && abs(d[2]) * rest <= m_tol * abs(y[2]))
+      return state{Real(0), Real(y[1] + d[1] * rest), Real(tau + rest), Real(y[2] + d[2] * rest)};
+    return std::nullopt;
   }
 
   // Whether the endpoint system's jet about this state would overflow Real: its
@@ -635,7 +678,7 @@ class taylor_impact_solver {
   }
 
 
-  // Phase 2 -> 2b: entered after maximal compression once r = v/u^c <= -1/(2 sqrt c).
+  // turn -> spiral: entered after maximal compression once r = v/u^c <= -1/(2 sqrt c).
   bool enters_spiral(const state& s) const {
     using std::pow;
     if (!m_spiral_possible || !(s.v < 0)) return false;
@@ -643,13 +686,13 @@ class taylor_impact_solver {
     return 4 * m_c.beta * r * r >= 1;
   }
 
-  // ---- phase 2b (spiral_system): g = 0, alpha + 1 = 2 beta, underdamped ----
-  // Takes the state where the time phase entered the spiral and the maximal
-  // compression u_max; integrates in sigma = ln u until the exit test of phase 2
+  // ---- spiral (spiral_system): g = 0, alpha + 1 = 2 beta, underdamped ----
+  // Takes the state where the turn phase entered the spiral and the maximal
+  // compression u_max; integrates in sigma = ln u until the exit test of the turn
   // holds (for g = 0 and beta = c it reads r <= -2 gamma, with u <= u_max/2; r
   // falls monotonically). Returns the exit rescaled to u = 1, with the scale and
   // the relative error of e so far.
-  spiral_exit<Real> spiral_phase(taylor_integrator<Real, ss>& integ, const state& from, const Real& u_max) {
+  spiral_end spiral_phase(taylor_integrator<Real, ss>& integ, const state& from, const Real& u_max) {
     using std::abs;
     using std::exp;
     using std::log;
@@ -659,7 +702,7 @@ class taylor_impact_solver {
     Real sigma = log(from.u);
     const Real sigma_exit = log(Real(u_max * m_switch_overlap));
     const Real r_exit = -2 * c.gamma;
-    spiral_exit<Real> out;
+    spiral_end out;
     // Relative error of e = |r| u^c at the exit: an error dr in r at r shifts
     // the exit sigma by c r^2/den(r) dr/r, den = 1 + gamma beta r + c r^2
     // (the sensitivity of int r dr/den); large on the slow spiral near critical
@@ -695,7 +738,7 @@ class taylor_impact_solver {
       // are each rounded, an absolute error of up to ~3 eps, not 1.
       out.error += 2 * boost::math::constants::pi<Real>() * xi * epsilon<Real>() / (gap * sqrt(gap));
     }
-    // Phase 3 runs on the problem scaled to u = 1 (u -> u/lambda, v -> v/lambda^c,
+    // The exit runs on the problem scaled to u = 1 (u -> u/lambda, v -> v/lambda^c,
     // tau -> tau lambda^(c-1), D -> D/lambda^(2c), lambda = exp(sigma)), which
     // the equation does not see; unscale_spiral scales back. NOTE: unscaled, the
     // series in s about a tiny u overflow, and exp(sigma) itself may underflow
@@ -713,12 +756,12 @@ class taylor_impact_solver {
     return m_c.beta * r * r / abs(den);
   }
 
-  // ---- phase 3: back to u = 0 in sigma ----
-  // Takes the state where phase 2 left (v < 0, u <= u_max/2), or the spiral's
-  // rescaled exit (then spiral_error is its error, and each step adds tol to it);
+  // ---- exit: back to u = 0 in sigma ----
+  // Takes the state where the turn left (v < 0, u <= u_max/2), or the spiral's
+  // rescaled end (then spiral_error is its error, and each step adds tol to it);
   // integrates the endpoint system backwards to s = 0 (rational exponents) or to
-  // u_eps = gap(|v|/2) (u = exp(sigma)). Returns the state there (u = 0 or u_eps).
-  state way_out(taylor_integrator<Real, es>& integ, const state& from, Real* spiral_error) {
+  // u_eps = series_limit(|v|/2) (u = exp(sigma)). Returns the state there (u = 0 or u_eps).
+  state exit_phase(taylor_integrator<Real, es>& integ, const state& from, Real* spiral_error) {
     using std::abs;
     using std::log;
     using std::pow;
@@ -730,7 +773,7 @@ class taylor_impact_solver {
       target = 0;
     } else {
       sigma = log(from.u);
-      u_eps = gap(Real(abs(from.v) / 2));
+      u_eps = series_limit(Real(abs(from.v) / 2));
       if (u_eps > from.u) u_eps = from.u;
       target = log(u_eps);
     }
@@ -759,7 +802,7 @@ class taylor_impact_solver {
     return state{u_eps, x[es::v], x[es::tau], x[es::D]};
   }
 
-  // Phase 3, u = exp(sigma) only: takes the state at u = u_eps and returns the
+  // Exit, u = exp(sigma) only: takes the state at u = u_eps and returns the
   // state at u = 0, from the leading terms of the generalized series (file comment).
   state close_by_series(state s) const {
     using std::pow;
@@ -773,19 +816,19 @@ class taylor_impact_solver {
     return s;
   }
 
-  // Phase 3, after the spiral: takes the state at u = 0 of the problem rescaled
-  // at the spiral's exit and returns it in the original units.
-  state unscale_spiral(state s, const spiral_exit<Real>& exit) {
+  // Exit, after the spiral: takes the state at u = 0 of the problem rescaled
+  // at the spiral's end and returns it in the original units.
+  state unscale_spiral(state s, const spiral_end& spiral) {
     using std::exp;
     const auto& c = m_c;
-    s.v *= exp(c.beta * exit.log_scale);
-    s.tau = exit.tau_before + s.tau * exp((1 - c.beta) * exit.log_scale);
-    s.D = exit.D_before + s.D * exp(2 * c.beta * exit.log_scale);
+    s.v *= exp(c.beta * spiral.log_scale);
+    s.tau = spiral.tau_before + s.tau * exp((1 - c.beta) * spiral.log_scale);
+    s.D = spiral.D_before + s.D * exp(2 * c.beta * spiral.log_scale);
     note_speed(s.v);
     return s;
   }
 
-  // Phase 3, last: takes the state at u = 0 (original units) and the spiral's
+  // Exit, last: takes the state at u = 0 (original units) and the spiral's
   // relative error of e (nullptr without a spiral); returns e, 1 - e, their
   // error estimate, the energy residual, and which identity e came from.
   // Two values of e: e_v = -v(T_f) from the trajectory and e_D = sqrt(1 - D)
@@ -820,7 +863,7 @@ class taylor_impact_solver {
     // NOTE: e_D is used only where it resolves e (1 - D above its error): near
     // e = 0 it is the square root of rounding noise, while e_v may still be right.
     // NOTE: after a long creep (over m_creep_min_steps steps past maximal compression,
-    // or phase 2c) e is small and D, summed over the creep, resolves e^2 = 1 - D only
+    // or the creep phase) e is small and D, summed over the creep, resolves e^2 = 1 - D only
     // to the sum of its steps' errors (linear law, gamma = 1e3, g = -1e-3: e = 1e-6
     // from D was off by 2e-4 relative), while the trajectory keeps v to relative
     // precision: there e_v is taken below e = 1/2.
@@ -868,13 +911,13 @@ class taylor_impact_solver {
                                 std::to_string(decimal_digits<Real>()) + " digits) is too low for " + describe());
   }
 
-  // g = 0: the barrier w = c gamma u^beta (file comment) proves creeps_to_origin;
-  // g > 0: creeps_to_equilibrium_from_above.
-  sticking_proof creeps_to_rest(const state& s) const {
+  // g = 0, past maximal compression: the barrier w = c gamma u^beta (file comment)
+  // proves creeps_to_origin. Deliberately the same barrier as the GBS solver's and the
+  // proof's, written independently.
+  sticking_proof creeps_to_origin(const state& s) const {
     using std::pow;
     const auto& c = m_c;
-    if (c.g > 0) return creeps_to_equilibrium_from_above(s);
-    if (c.g < 0 || c.gamma == 0 || !(s.v < 0)) return sticking_proof::none;
+    if (c.g != 0 || c.gamma == 0 || !(s.v < 0)) return sticking_proof::none;
     const Real k = c.alpha_plus_one - 2 * c.beta;
     if (k < 0) return sticking_proof::none;
     const Real damping = c.gamma * pow(s.u, c.beta);
@@ -940,7 +983,7 @@ class taylor_impact_solver {
 
   // u where the first-order terms of the generalized series at speed V are all
   // below tol V: g u/V, gamma u^beta, u^(alpha+1)/((alpha+1) V) <= tol V (and u <= tol).
-  Real gap(const Real& V) const {
+  Real series_limit(const Real& V) const {
     using std::abs;
     using std::pow;
     const auto& c = m_c;
@@ -1011,12 +1054,12 @@ class taylor_impact_solver {
   Real m_tol;
   Real m_u_eq = 0;  // the static equilibrium g^(1/alpha) for g > 0, where a creeping bead rests; else 0
   Real m_u_growth = std::numeric_limits<Real>::infinity();  // 4^(1/(alpha-1)): omega^2 grows at most 4-fold
-  bool m_spiral_possible = false;  // g = 0, alpha + 1 = 2 beta, underdamped: phase 2b may follow phase 2
-  // Phase switches: leave phase 1 when v < m_switch_speed * peak v; enter phase 3
-  // only once u < m_switch_overlap * u_max (away from the turning point, which
+  bool m_spiral_possible = false;  // g = 0, alpha + 1 = 2 beta, underdamped: the spiral may follow the turn
+  // Phase switches: leave the compress phase when v < m_switch_speed * peak v; enter
+  // the exit only once u < m_switch_overlap * u_max (away from the turning point, which
   // limits the sigma steps, as u = 0 limits the tau steps).
   const Real m_switch_speed = Real(4) / 5, m_switch_overlap = Real(1) / 2;
-  // The stiff-creep test (stiff_creep) runs after m_creep_min_steps steps past maximal
+  // The stiff-creep test (creep_out_of_reach) runs after m_creep_min_steps steps past maximal
   // compression (the fast transient has died) and gives up at m_creep_step_limit steps to go.
   const std::size_t m_creep_min_steps = 256;
   const Real m_creep_step_limit = 20000;

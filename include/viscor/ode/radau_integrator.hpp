@@ -1,29 +1,35 @@
 // Radau IIA collocation (Hairer and Wanner, "Solving ODEs II", sec. IV.5 and IV.8):
-// viscor's stiff integrator, for the creeping phase of strongly damped impacts
-// (issue 18 item 8), where explicit steps are bounded by the fast damping time while
-// the motion itself is slow. s stages, order 2s - 1, stiffly accurate and L-stable:
-// the fast mode is damped however long the step, so the step follows the slow motion.
+// the Taylor solver's stiff integrator, for the creep of strongly damped impacts, where
+// explicit steps are bounded by the fast damping time while the motion itself is slow.
+// s stages, order 2s - 1, stiffly accurate and L-stable: the fast mode is damped however
+// long the step, so the step follows the slow motion.
 //
 // The tableau is computed in Real when the integrator is built, so the order can
 // follow the working precision: the nodes c_i are the zeros of P_s(2c-1) - P_{s-1}(2c-1)
 // (c_s = 1), a_ij = int_0^{c_i} l_j (l_j the Lagrange basis on the nodes) by s-point
 // Gauss-Legendre quadrature, which is exact for it. Zeros are bracketed on a grid in
 // theta = arccos x and refined by bisection to a width of eps.
-// A step solves the collocation equations Z_i = h sum_j a_ij f(y0 + Z_j) by simplified
-// Newton (one LU of I - h A (x) J per collocation, J the Jacobian at the step's start). The
-// error is estimated by step doubling: the step is taken as one step of h and as two of
-// h/2, the two must agree to the tolerance, and the two half steps are kept.
 //
-// Cost (issue 18 item 8; measured at 50 digits, Hertz with linear damping, gamma = 1e6,
-// g = -1: 60% of the solve in the Real LU and its substitutions, s = 17, n = 3s = 51).
+// Operations, named as in lobatto_integrator.hpp (the GBS solver's, written apart):
+// try_step (step doubling: one step of h and two of h/2 must agree to the tolerance;
+// the two halves are kept), fixed_step (one step, no error control), solve_stages
+// (the stage equations Z_i = h sum_j a_ij f(y0 + Z_j) by simplified Newton, one LU of
+// I - h A (x) J per solve, J the Jacobian at the step's start), predict (first guesses
+// for the halves' stages), newton, factor/substitute (LU in Real) and
+// factor_low/substitute_low (LU in double). Deliberate differences from Lobatto IIIC:
+// the unknowns are the increments Z_i = Y_i - y0, not the stage values; order 2s - 1,
+// so the step factor is (tol/err)^(1/(s+1)) (safety 4/5, growth at most 4); up to four
+// matrix refreshes per solve.
+//
+// Most of a creep's time is in the Real LU and its substitutions (docs/performance.md).
 // Three things make it cheap without changing what is computed:
 // - Where Real is wider than long double, the iteration matrix is factored in double
-//   (in the unknowns scaled by |y0|; double, not x87 long double: 48 against 224 us
-//   for n = 51): the residual is still evaluated in Real, and the double solve only
+//   (in the unknowns scaled by |y0|; double, not x87 long double, which is several
+//   times slower): the residual is still evaluated in Real, and the double solve only
 //   gives the correction (iterative refinement), so Newton converges to the same
 //   collocation solution, at a rate ~ cond(M) eps_double per iteration on top of
 //   the simplified Newton's own. If it does not contract (or the matrix does not fit
-//   double's range), the collocation is redone with the LU in Real.
+//   double's range), the stages are solved again with the LU in Real.
 // - In that double path, where simplified Newton contracts slowly (a correction
 //   shrinking by less than 1e-6: J changes over a long step), the matrix is rebuilt
 //   from the Jacobians at the current stages (Newton's own matrix, quadratic).
@@ -188,15 +194,15 @@ class radau_integrator {
   /// Whether the iteration matrix is factored in double first (default: where Real
   /// is wider than long double). False: always in Real (the reference path).
   void set_low_precision_lu(bool on) { m_low_allowed = on; }
-  /// Whether collocations start with the double LU (set_low_precision_lu and Real's width).
+  /// Whether stage solves start with the double LU (set_low_precision_lu and Real's width).
   bool low_precision_lu() const {
     return m_low_allowed && binary_digits<Real>() > std::numeric_limits<long double>::digits;
   }
-  /// Collocations solved with the double LU, and those solved with the Real LU.
+  /// Stage solves done with the double LU.
   std::size_t low_precision_solves() const { return m_low_solves; }
-  /// Collocations solved with the LU in Real (the reference path, or after the double one failed).
+  /// Stage solves done with the LU in Real (the reference path, or after the double one failed).
   std::size_t real_precision_solves() const { return m_real_solves; }
-  /// Newton iterations over all collocations, and the matrices rebuilt at the stages.
+  /// Newton iterations over all stage solves.
   std::size_t newton_iterations() const { return m_iterations; }
   /// Matrices rebuilt from the Jacobians at the stages (slow contraction).
   std::size_t matrix_refreshes() const { return m_refreshes; }
@@ -210,13 +216,13 @@ class radau_integrator {
     using std::pow;
     state full, half, two_halves;
     const Real h2 = h / 2;
-    bool ok = collocate(f, jacobian, y, h, full, nullptr);
+    bool ok = solve_stages(f, jacobian, y, h, full, nullptr);
     if (ok) {
       // the half steps start from the full step's collocation polynomial
-      interpolate(m_tab.first_half, m_guess_first);
-      interpolate(m_tab.second_half, m_guess_second);
-      ok = collocate(f, jacobian, y, h2, half, &m_guess_first) &&
-           collocate(f, jacobian, half, h2, two_halves, &m_guess_second);
+      predict(m_tab.first_half, m_guess_first);
+      predict(m_tab.second_half, m_guess_second);
+      ok = solve_stages(f, jacobian, y, h2, half, &m_guess_first) &&
+           solve_stages(f, jacobian, half, h2, two_halves, &m_guess_second);
     }
     if (!ok) {
       m_error = 1 / epsilon<Real>();
@@ -248,15 +254,15 @@ class radau_integrator {
   /// One collocation step of h from y0 alone (no error control), into y1; false if
   /// Newton fails or a stage leaves the domain. For tests of the two LU paths.
   template <class F, class Jac>
-  bool collocation_step(F& f, Jac& jacobian, const state& y0, const Real& h, state& y1) {
-    return collocate(f, jacobian, y0, h, y1, nullptr);
+  bool fixed_step(F& f, Jac& jacobian, const state& y0, const Real& h, state& y1) {
+    return solve_stages(f, jacobian, y0, h, y1, nullptr);
   }
 
  private:
   enum class newton_end { converged, domain, no_contraction };
 
   // guess := P Z, P an s x s interpolation matrix of the tableau, Z the last stages.
-  void interpolate(const std::vector<Real>& P, std::vector<Real>& guess) const {
+  void predict(const std::vector<Real>& P, std::vector<Real>& guess) const {
     const std::size_t s = static_cast<std::size_t>(m_tab.s);
     guess.assign(s * N, Real(0));
     for (std::size_t i = 0; i < s; ++i)
@@ -269,7 +275,7 @@ class radau_integrator {
   // The collocation solution y1 after one step h from y0; false if Newton fails or a
   // stage leaves the domain of f. guess: the starting stages Z (nullptr: c_i h f(y0)).
   template <class F, class Jac>
-  bool collocate(F& f, Jac& jacobian, const state& y0, const Real& h, state& y1, const std::vector<Real>* guess) {
+  bool solve_stages(F& f, Jac& jacobian, const state& y0, const Real& h, state& y1, const std::vector<Real>* guess) {
     const std::size_t s = static_cast<std::size_t>(m_tab.s), n = s * N;
     matrix J;
     jacobian(y0, J);
@@ -298,7 +304,7 @@ class radau_integrator {
         }
         return factor_low(m_stage_j, h, y0, n);
       };
-      const newton_end end = iterate(f, y0, h, y1, [&] { substitute_low(n); }, refresh);
+      const newton_end end = newton(f, y0, h, y1, [&] { substitute_low(n); }, refresh, 4);
       if (end == newton_end::converged) {
         ++m_low_solves;
         return true;
@@ -320,23 +326,22 @@ class radau_integrator {
       }
     if (!factor(n)) return false;
     start();
-    const newton_end end = iterate(f, y0, h, y1, [&] { substitute(n); }, [] { return true; }, false);
+    const newton_end end = newton(f, y0, h, y1, [&] { substitute(n); }, [] { return true; }, 0);
     if (end == newton_end::converged) ++m_real_solves;
     return end == newton_end::converged;
   }
 
   // Simplified Newton from the stages in m_Z; solve() replaces m_r by M^{-1} m_r.
   // refresh(): rebuild and factor the matrix at the current stages (false: failed);
-  // used, if may_refresh, when a correction shrank by less than 1e-6.
+  // used at most `refreshes` times, when a correction shrank by less than 1e-6.
   template <class F, class Solve, class Refresh>
-  newton_end iterate(F& f, const state& y0, const Real& h, state& y1, Solve solve, Refresh refresh,
-                     bool may_refresh = true) {
+  newton_end newton(F& f, const state& y0, const Real& h, state& y1, Solve solve, Refresh refresh,
+                    int refreshes) {
     using std::abs;
     const std::size_t s = static_cast<std::size_t>(m_tab.s), n = s * N;
     m_slopes.resize(s);
     state y;
     Real previous = -1;
-    int refreshes = 0;
     const int max_iterations = 16 + binary_digits<Real>() / 8;
     const Real eps = epsilon<Real>();
     for (int it = 0; it < max_iterations; ++it) {
@@ -377,8 +382,8 @@ class radau_integrator {
         return newton_end::converged;
       }
       if (it >= 2 && size > previous) return newton_end::no_contraction;  // diverging: a shorter step
-      if (may_refresh && previous > 0 && size > previous * Real(1e-6) && refreshes < 4) {
-        ++refreshes;
+      if (refreshes > 0 && previous > 0 && size > previous * Real(1e-6)) {
+        --refreshes;
         ++m_refreshes;
         if (!refresh()) return newton_end::no_contraction;
       }

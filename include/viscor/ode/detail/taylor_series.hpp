@@ -217,13 +217,6 @@ void exponential_of_linear(std::vector<Real>& c, const Real& lambda, const Real&
   }
 }
 
-/// Coefficient k of c = a^n for an integer n >= 0 by the same recurrence as
-/// real_power (requires a[0] != 0); for a[0] == 0 use repeated products.
-template <class Real>
-void integer_power(Real& out, Real& scratch, long n, const Real* a, const Real* ja, const Real* c, std::size_t k) {
-  real_power(out, scratch, Real(n + 1), a, ja, c, k);
-}
-
 /// Value of the polynomial sum_{k=0}^{order} c[k] h^k (Horner).
 template <class Real>
 void horner(Real& out, const Real* c, std::size_t order, const Real& h) {
