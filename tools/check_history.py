@@ -38,13 +38,6 @@ FIXTURES = {"tests/history_fixture"}
 # Fuzzer inputs: data (some copied from reference_data/), not prose.
 FUZZ_INPUTS = {"tests/fuzz/corpus", "tests/fuzz/findings"}
 
-# TODO(merge): parts still being cleaned on other branches. Remove each entry once
-# its branch is merged and the check passes without it; the list ends empty.
-TODO_EXCLUDED = [
-    "include/viscor/impact",
-    "include/viscor/enclose",
-    "include/viscor/ode",
-]
 
 PATTERNS = [
     re.compile(r"\bissues?\s*#?\d+", re.IGNORECASE),
@@ -69,7 +62,7 @@ def files_under(root: pathlib.Path, spec: str):
 
 
 def excluded(rel: str) -> bool:
-    for prefix in list(FIXTURES) + list(FUZZ_INPUTS) + TODO_EXCLUDED:
+    for prefix in list(FIXTURES) + list(FUZZ_INPUTS):
         if rel == prefix or rel.startswith(prefix.rstrip("/") + "/"):
             return True
     return rel in ALLOWED

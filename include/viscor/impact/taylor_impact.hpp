@@ -657,7 +657,7 @@ class taylor_impact_solver {
   template <std::size_t N>
   std::optional<state> landed(creep_system<N>& sys, const std::array<Real, N>& y, const Real& tau) const {
     using std::abs;
-    std::array<Real, N> d;
+    std::array<Real, N> d{};  // rates() fills it; initialised so the compiler can see that
     sys.rates(y, d);
     const Real rest = y[0] / abs(y[1]);
     if (abs(d[1]) * rest <= m_tol * abs(y[1]) && abs(d[2]) * rest <= m_tol * abs(y[2]))
