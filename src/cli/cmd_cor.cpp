@@ -1,22 +1,13 @@
-// viscor cor: the coefficient of restitution of one impact, integrated to the
-// working precision (solve_impact, Taylor method by default). Parameters are
-// scaled (--gamma, --g) or physical (--m --k --gamma0 --v0 --gravity [--force],
-// converted by eq. (2)); or many points from a file (--points, jobs/point_batch.hpp).
-#include <viscor/jobs/certify_report.hpp>
+// viscor cor: the coefficient of restitution of one impact (the cor job,
+// jobs/cor_job.hpp), scaled (--gamma, --g) or physical (--m --k --gamma0 --v0
+// --gravity [--force]); or many points from a file (--points, jobs/point_batch.hpp).
 #include "cli_common.hpp"
 #include "command_registry.hpp"
-#include <viscor/jobs/point_batch.hpp>
 #include "physical_options.hpp"
 
-#include <viscor/core/scaling.hpp>
-#include <viscor/impact/solve_impact.hpp>
+#include <viscor/jobs/cor_job.hpp>
+#include <viscor/jobs/point_batch.hpp>
 
-#if VISCOR_HAS_ARB
-#include <viscor/jobs/proof_report.hpp>
-#endif
-
-#include <chrono>
-#include <map>
 #include <sstream>
 
 namespace viscor::cli::cmd_cor {  // named: the subcommands share translation units (unity build)
@@ -57,103 +48,18 @@ struct cor_command {
   std::size_t max_steps = solve_options<double>{}.max_steps;
   bool certify = false, prove = false;
 
-  /// --prove needs exact decimal inputs and rational exponents: checked before any work.
-  void check_provable(const contact_law& model, bool is_physical) const {
-    if (is_physical)
-      throw invalid_parameter("--prove needs the scaled --gamma and --g (exact decimals), not physical inputs");
-    for (const auto& [name, x] : {std::pair<const char*, const exponent*>{"alpha", &model.alpha}, {"beta", &model.beta}})
-      if (!x->is_rational())
-        throw invalid_parameter("not provable: exponent " + std::string(name) + " = " + x->to_string() +
-                                " is not rational (the proof needs u = s^Q at the end points)");
-#if !VISCOR_HAS_ARB
-    throw invalid_parameter("--prove: this viscor was built without Arb (apt-get install libflint-arb-dev)");
-#endif
-  }
-
   void run() {
     if (points) return run_points();
-    const contact_law model = law.resolve();
+    cor_request q;
+    q.law = law.resolve();
     if (deprecated_physical) read_deprecated_physical(*deprecated_physical, physical);
-    const bool is_physical = physical.given();
-    if (is_physical && (gamma || g))
-      throw invalid_parameter("give either the physical inputs (" + physical.given_names() +
-                              ") or the scaled --gamma/--g, not both");
-    if (!is_physical && !gamma)
-      throw invalid_parameter("cor needs --gamma (and optionally --g), or the physical inputs --m --k --gamma0 --v0 "
-                              "--gravity [--force], or --points FILE");
-    if (is_physical) {
-      physical.check("cor");
-      if (!physical.gamma0) throw invalid_parameter("cor: physical mode needs --gamma0 (the damping coefficient, SI)");
-    }
-    if (prove) check_provable(model, is_physical);
-    const integration_method how = parse_method(method);
-    with_working_precision(digits, [&]<class Real>() {
-      json j;
-      j["command"] = "cor";
-      j["law"] = law_json(model);
-      std::ostringstream text;
-      text << "law        " << model.describe() << "\n";
-      Real gamma_value, g_value;
-      std::optional<scaled_parameters<Real>> scales;
-      if (is_physical) {
-        const physical_parameters<Real> p = physical.parameters<Real>(model);
-        scales = to_scaled(model, p);
-        gamma_value = scales->gamma, g_value = scales->g;
-        j["physical"] = physical.echo();
-        j["time_scale_s"] = number(scales->time_scale);
-        j["length_scale_m"] = number(scales->length_scale);
-        text << "physical   " << physical.echo_text() << "\n";
-        if (physical.has_material())  // the bead's mass and stiffness are computed, not typed
-          text << "bead       m = " << to_decimal_string(p.m, 10) << " kg, k = " << to_decimal_string(p.k, 10)
-               << " N/m^(3/2) (from the material)\n";
-      } else {
-        gamma_value = parse_real<Real>(*gamma, "gamma");
-        g_value = g ? parse_real<Real>(*g, "g") : Real(0);
-      }
-      solve_options<Real> options;
-      options.method = how;
-      options.tolerance = parse_real<Real>(tolerance, "tolerance");
-      options.max_steps = max_steps;
-
-      const auto start = std::chrono::steady_clock::now();
-      const impact_result<Real> r = solve_impact(model, gamma_value, g_value, options);
-      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-
-      j["gamma"] = number(gamma_value);
-      j["g"] = number(g_value);
-      j["precision"] = scalar_json<Real>();
-      add_result_json(j, r, seconds);
-      if (scales) {
-        j["contact_time_s"] = number(Real(r.contact_time * scales->time_scale));
-        j["max_compression_m"] = number(Real(r.max_compression * scales->length_scale));
-      }
-
-      text << "gamma      " << number(gamma_value) << "\n"
-           << "g          " << number(g_value) << "\n"
-           << "outcome    " << to_string(r.outcome)
-           << (r.outcome == impact_outcome::undecided
-                   ? " (rebound or stick cannot be decided at this precision: e = 0 to within the error below)\n"
-                   : " (contact ends at zero overlap u = 0)\n")
-           << "e          " << number(r.e) << "\n"
-           << "1 - e      " << number(r.one_minus_e) << "\n"
-           << (r.outcome == impact_outcome::rebound ? "T_f        " : "T_stop     ")
-           << (r.outcome == impact_outcome::undecided ? std::string("unknown") : number(r.contact_time))
-           << " (scaled)\n";
-      if (scales && r.outcome != impact_outcome::undecided)
-        text << "time       " << number(Real(r.contact_time * scales->time_scale)) << " s (contact)\n";
-      text << "u_max      " << number(r.max_compression) << " at tau = " << number(r.time_of_max_compression) << "\n"
-           << (r.outcome == impact_outcome::stick ? "u_stop     " + number(r.stop_overlap) + " (where u' returns to 0, or the rest position)\n" : std::string())
-           << "error      " << to_decimal_string(r.error_estimate, 3) << " (estimated, absolute, on e)\n"
-           << "energy     " << to_decimal_string(r.energy_residual, 3) << " (residual of identity (6))\n"
-           << "steps      " << r.steps << " (" << to_string(r.method) << ")\n"
-           << "seconds    " << seconds << " s\n"
-           << "digits     " << decimal_digits<Real>() << " (working precision)\n";
-      if (certify) certify_and_report<Real>(model, gamma_value, g_value, text, j);
-#if VISCOR_HAS_ARB
-      if (prove) add_proof(model, *gamma, g ? *g : std::string("0"), digits, text, j);
-#endif
-      output.emit(text.str(), j);
-    });
+    q.physical = physical;
+    q.gamma = gamma, q.g = g;
+    q.method = parse_integration_method(method);
+    q.tolerance = tolerance, q.max_steps = max_steps, q.digits = digits;
+    q.certify = certify, q.prove = prove;
+    const command_output r = run_cor(q);
+    output.emit(r.text, r.object);
   }
 
   void run_points() const {
@@ -164,7 +70,7 @@ struct cor_command {
     if (threads < 1 || threads > 4096)
       throw invalid_parameter("--threads must be from 1 to 4096, got " + std::to_string(threads));
     point_options o;
-    o.method = parse_method(method);
+    o.method = parse_integration_method(method);
     o.tolerance = tolerance;
     o.max_steps = max_steps;
     o.default_digits = digits;
@@ -172,12 +78,6 @@ struct cor_command {
     const std::size_t failed = solve_points(*points, o, std::cout);
     if (failed) throw invalid_parameter(std::to_string(failed) + " point(s) of " + *points + " were refused (see their "
                                         "\"error\" lines)");
-  }
-
-  static integration_method parse_method(const std::string& method) {
-    if (method == "taylor") return integration_method::taylor;
-    if (method == "adaptive") return integration_method::adaptive;
-    throw invalid_parameter("--method must be 'taylor' or 'adaptive', got '" + method + "'");
   }
 };
 

@@ -1,24 +1,10 @@
-// The physical inputs of every subcommand, one vocabulary:
-//   --m (kg) --k (N/m^alpha) --v0 (m/s) --gamma0 (SI) --gravity (m/s^2) --force (N),
-// or the bead as a material (Hertz, alpha = 3/2):
-//   --youngs-modulus (Pa) --poisson-ratio --radius (m) --density (kg/m^3).
-// Gravity never defaults: a physical computation without --gravity is an error
-// naming it (0 is a value the user types), because the load changes the result.
-// The JSON echo (`"physical"`) uses the option names without dashes, as text.
+// The physical inputs of every subcommand as command-line options (the inputs
+// and their checks are the library's: jobs/physical_inputs.hpp).
 #pragma once
 
 #include "cli_common.hpp"
 
-#include <viscor/core/plausible_units.hpp>
-#include <viscor/jobs/unit_checks.hpp>
-#include <viscor/core/scaling.hpp>
-#include <viscor/scenes/scene.hpp>
-
-#include <cstdlib>
-#include <iostream>
-#include <optional>
-#include <string>
-#include <vector>
+#include <viscor/jobs/physical_inputs.hpp>
 
 namespace viscor::cli {
 
@@ -29,17 +15,8 @@ inline void add_strict_flag(CLI::App& app, bool& strict) {
                "warning about them");
 }
 
-/// Refuses a negative --gravity with the sign convention, quoting the value as typed.
-inline void require_gravity_towards_wall(const std::optional<std::string>& text) {
-  if (text && std::strtod(text->c_str(), nullptr) < 0) throw invalid_parameter("--" + negative_gravity_message(*text));
-}
-
-struct physical_options {
-  std::optional<std::string> m, k, v0, gamma0, gravity, force;
-  std::optional<std::string> youngs_modulus, poisson_ratio, radius, density;
-  std::optional<std::string> deprecated_force;  ///< --F, the spelling before 0.2.0
-  bool strict = false;  ///< refuse, not only warn about, inputs outside their plausible range
-
+/// --m --k --v0 --gamma0 --gravity --force (and --youngs-modulus --poisson-ratio --radius --density).
+struct physical_options : jobs::physical_inputs {
   /// Adds the options; `with_gamma0` false for commands that compute gamma0 (calibrate).
   void add_to(CLI::App& app, bool with_gamma0 = true, bool with_materials = true) {
     app.add_option("--m", m, "bead mass, kg");
@@ -57,133 +34,6 @@ struct physical_options {
       app.add_option("--density", density, "bead density, kg/m^3 (instead of --m, with --radius)");
     }
     add_strict_flag(app, strict);
-  }
-
-  bool has_material() const { return youngs_modulus || poisson_ratio || radius || density; }
-  /// Whether any physical input was given (the command is then in physical mode).
-  bool given() const { return m || k || v0 || gamma0 || gravity || force || deprecated_force || has_material(); }
-
-  /// The names of the physical options given, "--m, --k", for messages.
-  std::string given_names() const {
-    std::string s;
-    auto add = [&](const auto& o, const char* name) {
-      if (o) s += std::string(s.empty() ? "" : ", ") + name;
-    };
-    add(m, "--m"), add(k, "--k"), add(v0, "--v0"), add(gamma0, "--gamma0"), add(gravity, "--gravity");
-    add(force, "--force"), add(youngs_modulus, "--youngs-modulus"), add(poisson_ratio, "--poisson-ratio");
-    add(radius, "--radius"), add(density, "--density");
-    return s;
-  }
-
-  /// Checks completeness and folds the deprecated spelling in (warning on stderr).
-  /// `needs_gamma0`: cor needs it, scale defaults it to 0 (physical -> scaled of the load only).
-  void check(const std::string& command) {
-    if (deprecated_force) {
-      if (force) throw invalid_parameter("give --force, not both --force and --F (--F is its deprecated spelling)");
-      deprecation_warning("--F", "--force");
-      force = deprecated_force;
-      deprecated_force.reset();
-    }
-    if (has_material()) {
-      if (k) throw invalid_parameter(command + ": give the stiffness either as --k or as --youngs-modulus, "
-                                               "--poisson-ratio and --radius, not both");
-      if (!youngs_modulus || !poisson_ratio || !radius)
-        throw invalid_parameter(command + ": a bead given as a material needs --youngs-modulus, --poisson-ratio and "
-                                          "--radius (missing " + missing_material() + ")");
-      if (m && density) throw invalid_parameter(command + ": give the mass either as --m or as --density, not both");
-      if (!m && !density) throw invalid_parameter(command + ": the bead needs --m (kg) or --density (kg/m^3)");
-    } else {
-      if (!m) throw invalid_parameter(command + ": physical mode needs --m (bead mass, kg)");
-      if (!k) throw invalid_parameter(command + ": physical mode needs --k (contact stiffness, N/m^alpha)");
-    }
-    if (!v0) throw invalid_parameter(command + ": physical mode needs --v0 (impact speed, m/s)");
-    if (!gravity)
-      throw invalid_parameter(command + ": physical mode needs --gravity (m/s^2 towards the wall; 0 for none): "
-                                        "the load changes the result, so it never defaults");
-    require_gravity_towards_wall(gravity);
-    check_plausible_units();
-  }
-
-  /// Warns (refuses under --strict) about inputs far outside their quantity's range.
-  void check_plausible_units() const {
-    check_plausible_unit(physical_quantity::youngs_modulus, youngs_modulus, "--youngs-modulus", strict);
-    check_plausible_unit(physical_quantity::density, density, "--density", strict);
-    check_plausible_unit(physical_quantity::radius, radius, "--radius", strict);
-    check_plausible_unit(physical_quantity::speed, v0, "--v0", strict);
-    check_plausible_unit(physical_quantity::gravity, gravity, "--gravity", strict);
-  }
-
-  /// The bead (m, k) at the working precision; from the material when given.
-  template <class Real>
-  std::pair<Real, Real> bead(const contact_law& law) const {
-    if (!has_material()) return {parse_real<Real>(*m, "m"), parse_real<Real>(*k, "k")};
-    if (!(law.alpha == exponent::rational(3, 2)))
-      throw invalid_parameter("--youngs-modulus gives a Hertz stiffness, which holds only for alpha = 3/2; the law has "
-                              "alpha = " + law.alpha.to_string() + ": give --k instead");
-    const Real r = parse_real<Real>(*radius, "radius");
-    require_positive(r, "radius");
-    elastic_material<Real> material{parse_real<Real>(*youngs_modulus, "youngs_modulus"),
-                                    parse_real<Real>(*poisson_ratio, "poisson_ratio")};
-    material.validate("bead");
-    Real mass;
-    if (m) {
-      mass = parse_real<Real>(*m, "m");
-    } else {
-      const Real rho = parse_real<Real>(*density, "density");
-      require_positive(rho, "density");
-      mass = sphere_mass(rho, r);
-    }
-    return {mass, hertz_stiffness(effective_modulus<Real>(material, std::nullopt), r)};
-  }
-
-  /// Every physical input at the working precision (call check() first); gamma0 0 when absent.
-  template <class Real>
-  physical_parameters<Real> parameters(const contact_law& law) const {
-    physical_parameters<Real> p;
-    std::tie(p.m, p.k) = bead<Real>(law);
-    p.v0 = parse_real<Real>(*v0, "v0");
-    p.gamma0 = gamma0 ? parse_real<Real>(*gamma0, "gamma0") : Real(0);
-    p.gravity = parse_real<Real>(*gravity, "gravity");
-    p.force = force ? parse_real<Real>(*force, "force") : Real(0);
-    p.validate();
-    return p;
-  }
-
-  /// The inputs as the user wrote them, for the readable output: "m = 2.05e-3 kg, ...".
-  std::string echo_text() const {
-    std::string s;
-    auto put = [&](const char* name, const std::optional<std::string>& v, const char* unit) {
-      if (v) s += std::string(s.empty() ? "" : ", ") + name + " = " + *v + (*unit ? " " : "") + unit;
-    };
-    put("m", m, "kg"), put("k", k, "N/m^alpha"), put("youngs_modulus", youngs_modulus, "Pa");
-    put("poisson_ratio", poisson_ratio, ""), put("radius", radius, "m"), put("density", density, "kg/m^3");
-    put("gamma0", gamma0, ""), put("v0", v0, "m/s"), put("gravity", gravity, "m/s^2");
-    put("force", force ? force : std::optional<std::string>("0"), "N");
-    return s;
-  }
-
-  /// The inputs as given (decimal text), under the option names.
-  json echo() const {
-    json j;
-    auto put = [&](const char* name, const std::optional<std::string>& v) {
-      if (v) j[name] = *v;
-    };
-    put("m", m), put("k", k), put("v0", v0), put("gamma0", gamma0), put("gravity", gravity);
-    j["force"] = force ? *force : std::string("0");
-    put("youngs_modulus", youngs_modulus), put("poisson_ratio", poisson_ratio), put("radius", radius);
-    put("density", density);
-    return j;
-  }
-
- private:
-  std::string missing_material() const {
-    std::vector<std::string> missing;
-    if (!youngs_modulus) missing.push_back("--youngs-modulus");
-    if (!poisson_ratio) missing.push_back("--poisson-ratio");
-    if (!radius) missing.push_back("--radius");
-    std::string s;
-    for (const auto& x : missing) s += (s.empty() ? "" : ", ") + x;
-    return s;
   }
 };
 
