@@ -5,7 +5,10 @@ Every header under include/viscor/<folder>/ may include only headers of its own
 folder and of the folders ALLOWED lists for it; nothing but the umbrella and
 generated headers may sit directly in include/viscor/. The command-line front end
 (src/cli/) holds option parsing and printing only: no threads, signal handling or
-file reading and writing of its own (FRONT_END_FORBIDDEN). Exits 1 and names each
+file reading and writing of its own (FRONT_END_FORBIDDEN). The Python module
+(python/) binds the library's jobs: it includes no header of src/cli/ and calls
+no command-line words (PYTHON_FORBIDDEN) outside run_cli, the one documented way
+to run the tool itself. Exits 1 and names each
 offending include otherwise. Run: python3 tools/check_layers.py [repo root]
 """
 import pathlib
@@ -37,6 +40,9 @@ FRONT_END_DIRS = ["src/cli"]
 FRONT_END_FORBIDDEN = re.compile(
     r"std::thread|std::async|std::mutex|sigaction|std::signal\(|<csignal>|<thread>|std::ifstream|std::ofstream|"
     r"sax_parse|json::parse\(|::open\(|::write\(")
+# The Python module sits on the library, not on the command-line tool.
+PYTHON_FORBIDDEN = re.compile(r'src/cli|"cli_common\.hpp"|"command_registry\.hpp"|\bcli::|run_cli\(')
+PYTHON_RUN_CLI_DEFINITION = re.compile(r"^\s*def run_cli\(")
 # Headers that pairs of folders must never include, even where ALLOWED would (the two
 # integrators are independent checks of each other, so neither may see the other).
 FORBIDDEN_PAIRS = [
@@ -87,6 +93,14 @@ def main() -> int:
                 if FRONT_END_FORBIDDEN.search(line) and not line.lstrip().startswith("//"):
                     problems.append(f"{path.relative_to(root)}:{number}: '{FRONT_END_FORBIDDEN.search(line).group(0)}' "
                                     "in a front end: threads, signals and file formats belong in include/viscor/jobs/")
+    python = root / "python"
+    for path in sorted(p for p in python.rglob("*") if p.suffix in (".cpp", ".hpp", ".py", ".txt")) if python.is_dir() else []:
+        comment = "//" if path.suffix in (".cpp", ".hpp") else "#"
+        for number, line in enumerate(path.read_text().splitlines(), 1):
+            found = PYTHON_FORBIDDEN.search(line)
+            if found and not PYTHON_RUN_CLI_DEFINITION.match(line) and not line.lstrip().startswith(comment):
+                problems.append(f"{path.relative_to(root)}:{number}: '{found.group(0)}' in the Python module: it calls "
+                                "the library's jobs (include/viscor/jobs/), not the command-line tool")
     for p in problems:
         print(p)
     print(f"check_layers: {len(problems)} problem(s) in {sum(1 for _ in base.rglob('*.hpp'))} headers")

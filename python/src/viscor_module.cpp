@@ -1,15 +1,19 @@
 // viscor._viscor: the compiled part of the Python module (docs/python.md).
 //   cor       one CoR at a working precision (solve_impact, optionally certify), as
 //             the JSON object of `viscor cor --json` (a dict of decimal strings)
-//   run       any subcommand of the CLI in-process (the same code, files and
-//             messages), returning what it prints
+//   exact, approx, scale, calibrate, dem, physical_cor
+//             the one-shot jobs (command_bindings.cpp)
+//   table, scene, solve_points
+//             the table, scene and point-batch jobs
 //   evaluate  accuracy-driven e over arrays of points in double, on worker threads
 //             without the GIL (scenes/evaluate.hpp, optionally a surrogate first)
 //   surrogate a CoR surrogate file, evaluated in double
 // viscor's exceptions become the Python exceptions created here (ValueError
 // subclasses for bad input), with the library's messages.
-#include "cli_common.hpp"
-#include "command_registry.hpp"
+#include <viscor/certify/extern_templates.hpp>  // first: the solvers are compiled once, in libviscor
+
+#include "python_objects.hpp"
+
 #include <viscor/jobs/cor_job.hpp>
 #include <viscor/jobs/point_batch.hpp>
 #include <viscor/jobs/scene_job.hpp>
@@ -98,8 +102,6 @@ void register_exceptions(py::module_& m) {
       PyErr_SetString(exceptions.certification_error, e.what());
     } catch (const error& e) {
       PyErr_SetString(exceptions.error, e.what());
-    } catch (const CLI::ParseError& e) {  // run(): an option the subcommand does not know, or a bad value
-      PyErr_SetString(exceptions.invalid_parameter, e.what());
     }
   });
 }
@@ -117,28 +119,6 @@ Real parse_value(const std::string& text, const std::string& name) {
   const Real p = parse_real<Real>(text.substr(0, slash), name), q = parse_real<Real>(text.substr(slash + 1), name);
   if (q == 0) throw invalid_parameter("parameter " + name + " = " + text + " divides by zero");
   return Real(p / q);
-}
-
-// nlohmann JSON -> Python objects (numbers stay decimal strings where the CLI writes strings).
-py::object to_python(const json& j) {
-  switch (j.type()) {
-    case json::value_t::object: {
-      py::dict d;
-      for (const auto& [key, value] : j.items()) d[py::str(key)] = to_python(value);
-      return d;
-    }
-    case json::value_t::array: {
-      py::list l;
-      for (const auto& value : j) l.append(to_python(value));
-      return l;
-    }
-    case json::value_t::string: return py::str(j.get<std::string>());
-    case json::value_t::boolean: return py::bool_(j.get<bool>());
-    case json::value_t::number_integer: return py::int_(j.get<long long>());
-    case json::value_t::number_unsigned: return py::int_(j.get<unsigned long long>());
-    case json::value_t::number_float: return py::float_(j.get<double>());
-    default: return py::none();
-  }
 }
 
 // ---- cor ----
@@ -242,37 +222,6 @@ py::tuple table_columns(const std::string& path) {
   py::list rows;
   for (const auto& r : t.rows) rows.append(py::cast(r.fields));
   return py::make_tuple(header, rows);
-}
-
-// ---- run: a subcommand in-process ----
-
-std::mutex run_mutex;  // std::cout is redirected for the call: one run at a time
-
-std::string run(const std::vector<std::string>& args) {
-  py::gil_scoped_release release;
-  const std::lock_guard<std::mutex> lock(run_mutex);
-  CLI::App app{"viscor"};
-  app.require_subcommand(1);
-  cli::add_commands(app);
-  std::vector<const char*> argv{"viscor"};
-  for (const std::string& a : args) argv.push_back(a.c_str());
-  std::ostringstream captured;
-  std::streambuf* const saved = std::cout.rdbuf(captured.rdbuf());
-  try {
-    cli::refuse_empty_assignments(static_cast<int>(argv.size()), argv.data());
-    app.parse(static_cast<int>(argv.size()), argv.data());
-  } catch (const CLI::ParseError& e) {
-    std::cout.rdbuf(saved);
-    if (e.get_exit_code() != 0) throw;
-    std::ostringstream help, ignored;  // --help: the text is the result
-    app.exit(e, help, ignored);
-    return help.str();
-  } catch (...) {
-    std::cout.rdbuf(saved);
-    throw;
-  }
-  std::cout.rdbuf(saved);
-  return captured.str();
 }
 
 // ---- evaluate over arrays ----
@@ -484,8 +433,9 @@ PYBIND11_MODULE(_viscor, m) {
       py::arg("tolerance"), py::arg("max_steps"),
       "A batch of points (jobs/point_batch.hpp): one dict per point, as `viscor cor --points` prints them.");
 
-  m.def("run", &vp::run, py::arg("args"),
-        "Runs `viscor ARGS...` in-process and returns what it prints; raises on errors.");
+  vp::bind_commands(m);
+  // The command-line tool built with this module: where run_cli finds it (build tree, then installed).
+  m.attr("cli_candidates") = std::vector<std::string>{VISCOR_BUILT_CLI, VISCOR_INSTALLED_CLI};
 
   m.def("data_directory", [] { return viscor::jobs::data_directory(); },
         "The data directory (certified tables, error maps) the CLI code would use.");

@@ -41,29 +41,53 @@ __all__ = ["cor", "cor_points", "Points", "exact", "approx", "calibrate", "scale
            "CertificationError", "data_directory"]
 
 
-def cor(law=None, gamma=None, g=0, digits=50, certify=False, *, alpha=None, beta=None, method="taylor",
-        tolerance="0", max_steps=None):
+_SCALED_LOAD_NOT_GIVEN = object()  # cor()'s g when the caller gave none (0 in scaled mode)
+
+
+def cor(law=None, gamma=None, g=_SCALED_LOAD_NOT_GIVEN, digits=50, certify=False, *, alpha=None, beta=None,
+        method="taylor", tolerance="0", max_steps=None, strict=False, **physical):
     """The coefficient of restitution of one impact at `digits` working digits.
 
     law: a name (NAMED_LAWS), or alpha= and beta= (str such as '3/2', Fraction, int,
-    Decimal). gamma, g: str, int, Decimal, Fraction or float (a float is its exact
-    binary value). certify=True adds ``certified`` (the digits three computations
-    agree on, four where the adaptive one is repeated at the reference precision), as ``viscor cor --certify``. Returns a Result with the fields of
-    ``viscor cor --json``: e, one_minus_e, outcome, contact_time, max_compression,
-    time_of_max_compression, energy_residual, error_estimate, steps, method,
-    seconds, gamma, g, law, precision (and stop_overlap for a stick).
+    Decimal). gamma, g (default 0): the scaled damping and load, str, int, Decimal,
+    Fraction or float (a float is its exact binary value). Or, instead of gamma and
+    g, the physical inputs as ``viscor cor`` takes them: m (kg) and k (N/m^alpha),
+    or youngs_modulus (Pa), poisson_ratio, radius (m) and m or density (kg/m^3);
+    v0 (m/s), gamma0 (SI), gravity (m/s^2, required: 0 for none) and force (N,
+    default 0); strict=True refuses inputs far outside their plausible range.
+    certify=True adds ``certified`` (the digits three computations agree on, four
+    where the adaptive one is repeated at the reference precision), as ``viscor cor
+    --certify``. Returns a Result with the fields of ``viscor cor --json``: e,
+    one_minus_e, outcome, contact_time, max_compression, time_of_max_compression,
+    energy_residual, error_estimate, steps, method, seconds, gamma, g, law,
+    precision (and stop_overlap for a stick; physical, time_scale_s,
+    length_scale_m, contact_time_s, max_compression_m in physical mode).
     """
-    if gamma is None:
-        raise TypeError("cor() needs gamma")
+    from ._commands import PHYSICAL_INPUTS
+    for key in physical:
+        if key not in PHYSICAL_INPUTS:
+            raise TypeError(f"cor() got an unexpected keyword argument {key!r}")
+    physical = {k: _text(v, k) for k, v in physical.items() if v is not None}
+    if gamma is None and not physical:
+        raise TypeError("cor() needs gamma (and g), or the physical inputs m, k, v0, gamma0, gravity")
+    if physical and (gamma is not None or g is not _SCALED_LOAD_NOT_GIVEN):
+        raise InvalidParameter("give either the physical inputs (" + ", ".join(physical) +
+                               ") or the scaled gamma and g, not both")
     name, a, b = _law_texts(law, alpha, beta)
     if not isinstance(certify, bool):
         raise TypeError(f"certify must be True or False, got {certify!r}")
+    if not isinstance(strict, bool):
+        raise TypeError(f"strict must be True or False, got {strict!r}")
     if method not in ("taylor", "adaptive"):
         raise InvalidParameter(f"method must be 'taylor' or 'adaptive', got {method!r}")
     if max_steps is None:
         max_steps = 0  # the library's default
     elif isinstance(max_steps, bool) or not isinstance(max_steps, int) or not 1 <= max_steps <= 10**12:
         raise InvalidParameter(f"max_steps must be a whole number from 1 to 1e12, got {max_steps!r}")
+    if physical:
+        return Result(_viscor.physical_cor(name, a, b, physical, _check_digits(digits), certify, method,
+                                           _text(tolerance, "tolerance"), max_steps, strict))
+    g = 0 if g is _SCALED_LOAD_NOT_GIVEN else g
     fields = _viscor.cor(name, a, b, _text(gamma, "gamma"), _text(g, "g"), _check_digits(digits), certify, method,
                          _text(tolerance, "tolerance"), max_steps)
     return Result(fields)

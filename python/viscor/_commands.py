@@ -1,15 +1,16 @@
-"""The subcommands that read or write files, or convert units, run in-process.
+"""The jobs of the library (include/viscor/jobs/), called through the compiled module.
 
-Each function runs the CLI's own code (`viscor <command> ... --json`) inside this
-process, so options, files, messages and JSON field names are exactly the
-CLI's (docs/cli.md, docs/json-schema.md). Keyword arguments are the CLI's
-options with '-' written '_' (gravity=9.8, youngs_modulus='2e11', target_e='0.9');
-None leaves an option out, True gives a flag.
+Each function calls the C++ job the command-line tool calls for the same
+subcommand, without the GIL, and returns its result as Python objects: the
+fields and messages are the CLI's (docs/cli.md, docs/json-schema.md). Keyword
+arguments are the CLI's options with '-' written '_' (gravity=9.8,
+youngs_modulus='2e11', target_e='0.9'); None leaves an input out.
 """
 
 import csv
 import json
 import os
+import subprocess
 
 from . import _viscor
 from ._viscor import InvalidParameter
@@ -17,52 +18,64 @@ from ._inputs import check_digits, law_texts, number_text
 from ._result import Result
 from ._table import Table
 
+#: The physical inputs, named as the CLI's options (docs/cli.md): the bead (m, k or
+#: the material), the impact speed, the damping and the load.
+PHYSICAL_INPUTS = ("m", "k", "v0", "gamma0", "gravity", "force", "youngs_modulus", "poisson_ratio", "radius",
+                   "density")
+
 
 def run_cli(*args):
-    """Runs ``viscor ARGS...`` in this process and returns what it prints.
+    """Runs the command-line tool ``viscor ARGS...`` and returns what it prints.
 
-    Errors raise the exceptions of viscor (InvalidParameter for bad options or
-    values) instead of exiting.
+    For what the Python functions do not cover; every job has a function of its
+    own. The tool is the one built or installed with this module ($VISCOR_CLI
+    overrides). Exit code 2 (bad input) raises InvalidParameter with the tool's
+    message, any other failure viscor.Error.
     """
     for a in args:
         if not isinstance(a, str):
             raise TypeError(f"run_cli takes strings (the command line's words), got {a!r}")
-    return _viscor.run(list(args))
+    candidates = [os.environ.get("VISCOR_CLI")] + list(_viscor.cli_candidates)
+    tool = next((c for c in candidates if c and os.access(c, os.X_OK)), None)
+    if tool is None:
+        raise _viscor.Error("run_cli: the viscor command-line tool was not found (looked in "
+                            + ", ".join(c for c in candidates if c) + "; set VISCOR_CLI)")
+    done = subprocess.run([tool, *args], capture_output=True, text=True)
+    if done.returncode == 2:
+        raise InvalidParameter(done.stderr.strip())
+    if done.returncode != 0:
+        raise _viscor.Error(done.stderr.strip() or f"viscor exited with {done.returncode}")
+    return done.stdout
 
 
-def _options(**options):
-    words = []
-    for key, value in options.items():
-        if value is None or value is False:
-            continue
-        flag = "--" + key.replace("_", "-")
-        if value is True:
-            words.append(flag)
-        elif isinstance(value, (list, tuple)):
-            words += [flag, ",".join(number_text(v, key) for v in value)]
-        elif isinstance(value, os.PathLike):
-            words += [flag, os.fspath(value)]
-        else:
-            words += [flag, number_text(value, key)]
-    return words
+def _texts(options, command):
+    """The given options as exact decimal text (None: not given)."""
+    return {k: number_text(v, k) for k, v in options.items() if v is not None}
 
 
-def _law_options(law, alpha, beta):
-    name, a, b = law_texts(law, alpha, beta)
-    return (["--model", name] if name else []) + (["--alpha", a] if a else []) + (["--beta", b] if b else [])
+def _physical(options, command, allowed=PHYSICAL_INPUTS):
+    """Splits `options` into the physical inputs (as text) and refuses any other keyword."""
+    for key in options:
+        if key not in allowed:
+            raise TypeError(f"{command}() got an unexpected keyword argument {key!r}")
+    return _texts(options, command)
 
 
-def _json_command(command, law_words, **options):
-    if "digits" in options and options["digits"] is not None:
-        options["digits"] = check_digits(options["digits"])
-    text = run_cli(command, *law_words, *_options(**options), "--json")
-    return Result(json.loads(text))
+def _optional_text(value, name):
+    return "" if value is None else number_text(value, name)
+
+
+def _flag(value, name):
+    if not isinstance(value, bool):
+        raise TypeError(f"{name} must be True or False, got {value!r}")
+    return value
 
 
 def exact(law=None, gamma=0, g=0, digits=15, *, alpha=None, beta=None):
     """The closed-form CoR where one exists (``viscor exact``): Result with exists,
     formula, e, one_minus_e, outcome, contact_time, max_compression, ..."""
-    return _json_command("exact", _law_options(law, alpha, beta), gamma=gamma, g=g, digits=digits)
+    name, a, b = law_texts(law, alpha, beta)
+    return Result(_viscor.exact(name, a, b, number_text(gamma, "gamma"), number_text(g, "g"), check_digits(digits)))
 
 
 def approx(law=None, gamma=None, g=0, formula=None, *, alpha=None, beta=None, source=None, order=None, digits=None):
@@ -70,34 +83,63 @@ def approx(law=None, gamma=None, g=0, formula=None, *, alpha=None, beta=None, so
     schwager_poschel, prop2, ... (formula='surrogate': the committed surrogate)."""
     if gamma is None:
         raise TypeError("approx() needs gamma")
-    return _json_command("approx", _law_options(law, alpha, beta), gamma=gamma, g=g, formula=formula,
-                         source=source, order=order, digits=digits)
+    if order is not None and (isinstance(order, bool) or not isinstance(order, int)):
+        raise TypeError(f"order must be a whole number, got {order!r}")
+    name, a, b = law_texts(law, alpha, beta)
+    return Result(_viscor.approx(name, a, b, number_text(gamma, "gamma"), number_text(g, "g"), formula or "all",
+                                 source or "all", 21 if order is None else order,
+                                 15 if digits is None else check_digits(digits)))
 
 
-def calibrate(law=None, target_e=None, g=None, *, alpha=None, beta=None, digits=15, **options):
+def calibrate(law=None, target_e=None, g=None, *, alpha=None, beta=None, digits=15, tolerance="0", gamma_max="100",
+              method="solve", strict=False, **physical):
     """The damping that gives a target CoR (``viscor calibrate``): scaled with g, or
     physical with m, k (or youngs_modulus, poisson_ratio, radius, density), v0,
-    gravity, force. Also tolerance, gamma_max."""
+    gravity, force. Also tolerance, gamma_max, method ('solve' or 'surrogate')."""
     if target_e is None:
         raise TypeError("calibrate() needs target_e")
-    return _json_command("calibrate", _law_options(law, alpha, beta), target_e=target_e, g=g, digits=digits,
-                         **options)
+    name, a, b = law_texts(law, alpha, beta)
+    inputs = _physical(physical, "calibrate", tuple(k for k in PHYSICAL_INPUTS if k != "gamma0"))
+    return Result(_viscor.calibrate(name, a, b, inputs, number_text(target_e, "target_e"), _optional_text(g, "g"),
+                                    number_text(tolerance, "tolerance"), number_text(gamma_max, "gamma_max"),
+                                    str(method), check_digits(digits), _flag(strict, "strict")))
 
 
-def scale(law=None, *, alpha=None, beta=None, digits=15, **options):
+def scale(law=None, *, alpha=None, beta=None, digits=15, gamma=None, g=None, strict=False, **physical):
     """Physical <-> scaled parameters, eq. (2) (``viscor scale``): m, k (or the
     material), v0, gravity, force, and gamma0 (-> gamma, g) or gamma and g
     (-> gamma0, force)."""
-    return _json_command("scale", _law_options(law, alpha, beta), digits=digits, **options)
+    name, a, b = law_texts(law, alpha, beta)
+    return Result(_viscor.scale(name, a, b, _physical(physical, "scale"), _optional_text(gamma, "gamma"),
+                                _optional_text(g, "g"), check_digits(digits), _flag(strict, "strict")))
 
 
-def dem(code, *, digits=None, **options):
-    """Damping entries for a DEM deck (``viscor dem``, docs/dem.md): code 'lammps'
-    or 'liggghts'; damping, contact, youngs_modulus, poisson_ratio, radius,
-    density, target_e (or deck_damping), v0, gravity, force, speeds."""
+_DEM_INPUTS = ("damping", "contact", "youngs_modulus", "poisson_ratio", "k", "radius", "density", "target_e",
+               "deck_damping", "deck_en", "v0", "gravity", "force", "speeds", "drop_deck")
+
+
+def dem(code, *, digits=15, strict=False, **options):
+    """Damping entries for a DEM deck (``viscor dem``, docs/dem.md): code 'lammps',
+    'liggghts' or 'yade'; damping, contact, youngs_modulus, poisson_ratio (or k),
+    radius, density, target_e (or deck_damping, deck_en), v0, gravity, force,
+    speeds (a list), drop_deck (a path to write a complete drop deck to)."""
     if not isinstance(code, str):
-        raise TypeError(f"dem() needs the DEM code as a string ('lammps' or 'liggghts'), got {code!r}")
-    return _json_command("dem", [code], digits=digits, **options)
+        raise TypeError(f"dem() needs the DEM code as a string ('lammps', 'liggghts' or 'yade'), got {code!r}")
+    fields = {"code": code}
+    for key, value in options.items():
+        if key not in _DEM_INPUTS:
+            raise TypeError(f"dem() got an unexpected keyword argument {key!r}")
+        if value is None:
+            continue
+        if key in ("damping", "contact"):
+            fields[key] = str(value)
+        elif key == "drop_deck":
+            fields[key] = os.fspath(value)
+        elif key == "speeds" and isinstance(value, (list, tuple)):
+            fields[key] = ",".join(number_text(v, key) for v in value)
+        else:
+            fields[key] = number_text(value, key)
+    return Result(_viscor.dem(fields, check_digits(digits), _flag(strict, "strict")))
 
 
 def scene(file, out=None, *, error_maps=None):

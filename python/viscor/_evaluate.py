@@ -30,8 +30,40 @@ def _committed_surrogate(name):
     return _committed_surrogates[key]
 
 
+def _scaled_from_physical(name, a, b, tol, physical):
+    """(gamma, g, tol) arrays from arrays of physical inputs, broadcast together."""
+    import numpy as np
+
+    bead = ("youngs_modulus", "poisson_ratio", "radius") if "youngs_modulus" in physical else ("m", "k")
+    for needed in bead + ("v0", "gamma0", "gravity"):
+        if needed not in physical:
+            raise _viscor.InvalidParameter(f"evaluate: the physical inputs need {needed} (given: "
+                                           f"{', '.join(physical)}); gravity never defaults (0 for none)")
+    if "youngs_modulus" in physical and "m" not in physical and "density" not in physical:
+        raise _viscor.InvalidParameter("evaluate: a bead given as a material needs m or density")
+    names = list(physical)
+    try:
+        arrays = [np.asarray(physical[k], dtype=np.float64) for k in names] + [np.asarray(tol, dtype=np.float64)]
+    except (TypeError, ValueError) as error:
+        raise TypeError(f"evaluate: the physical inputs must be numbers or arrays of numbers") from error
+    try:
+        broadcast = np.broadcast_arrays(*arrays)
+    except ValueError as error:
+        raise _viscor.InvalidParameter("evaluate: the physical inputs and tol do not broadcast together ("
+                                       + ", ".join(f"{k} {x.shape}" for k, x in zip(names + ["tol"], arrays))
+                                       + ")") from error
+    shape = broadcast[0].shape
+    columns = {k: np.ascontiguousarray(x).reshape(-1) for k, x in zip(names, broadcast[:-1])}
+    gamma, g = _viscor.scaled_arrays(name, a, b, columns)
+    return gamma.reshape(shape), g.reshape(shape), broadcast[-1]
+
+
+#: The physical inputs evaluate takes instead of gamma and g (as ``viscor cor`` names them).
+_PHYSICAL = ("m", "k", "v0", "gamma0", "gravity", "force", "youngs_modulus", "poisson_ratio", "radius", "density")
+
+
 def evaluate(law=None, gamma=None, g=0.0, tol=1e-6, *, alpha=None, beta=None, relative=False, error_maps="default",
-             surrogate="default", threads=0):
+             surrogate="default", threads=0, **physical):
     """e with an empirical error bound <= tol at every point, over arrays.
 
     gamma, g, tol: array-likes of float64, broadcast together (NumPy rules). Each
@@ -45,13 +77,27 @@ def evaluate(law=None, gamma=None, g=0.0, tol=1e-6, *, alpha=None, beta=None, re
     Surrogate; it is used first wherever its verified bound meets tol.
     threads: worker threads (0: every core); the GIL is released.
 
+    Instead of gamma and g, the physical inputs as ``viscor cor`` takes them, each
+    a number or an array (broadcast together with tol): m and k, or
+    youngs_modulus, poisson_ratio, radius and m or density; v0, gamma0, gravity
+    (required: 0 for none) and force (default 0). They are scaled in double.
+
     Raises InvalidParameter naming the first bad point (NaN, gamma < 0, ...).
     """
     import numpy as np
 
+    for key in physical:
+        if key not in _PHYSICAL:
+            raise TypeError(f"evaluate() got an unexpected keyword argument {key!r}")
+    physical = {k: v for k, v in physical.items() if v is not None}
+    name, a, b = law_texts(law, alpha, beta)
+    if physical:
+        if gamma is not None:
+            raise _viscor.InvalidParameter("evaluate: give either the physical inputs (" + ", ".join(physical) +
+                                           ") or the scaled gamma and g, not both")
+        gamma, g, tol = _scaled_from_physical(name, a, b, tol, physical)
     if gamma is None:
         raise TypeError("evaluate() needs gamma")
-    name, a, b = law_texts(law, alpha, beta)
     arrays = []
     for label, value in (("gamma", gamma), ("g", g), ("tol", tol)):
         try:

@@ -52,6 +52,101 @@ class SameAsTheCli(unittest.TestCase):
         self.assertEqual(mine, cli)
 
 
+def without_timings(value):
+    """A JSON value with every "seconds" field (a timing, at any depth) removed."""
+    if isinstance(value, dict):
+        return {k: without_timings(v) for k, v in value.items() if k != "seconds"}
+    if isinstance(value, list):
+        return [without_timings(v) for v in value]
+    return value
+
+
+def same_fields(test, mine, cli):
+    """The Python result equals the CLI's JSON object, timings aside."""
+    test.assertEqual(without_timings(mine.to_dict()), without_timings(cli))
+
+
+def cli_words(options):
+    return [w for k, v in options.items() for w in ("--" + k.replace("_", "-"), v)]
+
+
+@unittest.skipUnless(CLI, "VISCOR_CLI not set")
+class JobsSameAsTheCli(unittest.TestCase):
+    """Each Python function calls the library's job; the CLI calls the same job from
+    its own options: the two front ends must agree field for field."""
+
+    BEAD = dict(m="2.05e-3", k="6.9716e9", v0="0.246", gravity="9.8")
+
+    def test_exact(self):
+        same_fields(self, viscor.exact("tsuji", "0.1", "0", digits=30),
+                    cli_json("exact", "--model", "tsuji", "--gamma", "0.1", "--g", "0", "--digits", "30"))
+
+    def test_scale_both_directions(self):
+        same_fields(self, viscor.scale("kuwabara_kono", gamma0="8.49e-7", digits=20, **self.BEAD),
+                    cli_json("scale", "--model", "kuwabara_kono", "--gamma0", "8.49e-7", "--digits", "20",
+                             *cli_words(self.BEAD)))
+        same_fields(self, viscor.scale("kuwabara_kono", gamma="0.1", g="0.5", **self.BEAD),
+                    cli_json("scale", "--model", "kuwabara_kono", "--gamma", "0.1", "--g", "0.5",
+                             *cli_words(self.BEAD)))
+
+    def test_calibrate_physical_and_by_surrogate(self):
+        same_fields(self, viscor.calibrate("kuwabara_kono", "0.893", digits=20, **self.BEAD),
+                    cli_json("calibrate", "--model", "kuwabara_kono", "--target-e", "0.893", "--digits", "20",
+                             *cli_words(self.BEAD)))
+        same_fields(self, viscor.calibrate("tsuji", "0.8", g="0.5", method="surrogate"),
+                    cli_json("calibrate", "--model", "tsuji", "--target-e", "0.8", "--g", "0.5", "--method",
+                             "surrogate"))
+
+    def test_cor_physical_inputs_and_material(self):
+        same_fields(self, viscor.cor("kuwabara_kono", gamma0="8.49e-7", digits=30, **self.BEAD),
+                    cli_json("cor", "--model", "kuwabara_kono", "--gamma0", "8.49e-7", "--digits", "30",
+                             *cli_words(self.BEAD)))
+        glass = dict(youngs_modulus="70e9", poisson_ratio="0.22", radius="1e-3", density="2500", v0="0.5",
+                     gamma0="1", gravity="9.81")
+        same_fields(self, viscor.cor("tsuji", digits=20, certify=True, **glass),
+                    cli_json("cor", "--model", "tsuji", "--digits", "20", "--certify", *cli_words(glass)))
+
+    def test_dem_reverse(self):
+        options = dict(damping="tsuji", youngs_modulus="70e9", poisson_ratio="0.22", radius="1e-3", density="2500",
+                       deck_damping="0.5", v0="0.5", gravity="9.81")
+        r = viscor.dem("lammps", speeds=["0.1", "1"], **options)
+        same_fields(self, r, cli_json("dem", "lammps", "--speeds", "0.1,1", *cli_words(options)))
+
+
+class PhysicalInputs(unittest.TestCase):
+    BEAD = dict(m="2.05e-3", k="6.9716e9", v0="0.246", gravity="9.8")
+
+    def test_cor_equals_scaled_cor_at_the_scaled_point(self):
+        # The physical mode is the scaled solve at (gamma, g) of eq. (2): scale() and
+        # cor() at that point give the same e (an independent path through the scaling).
+        s = viscor.scale("kuwabara_kono", gamma0="8.49e-7", digits=30, **self.BEAD)
+        direct = viscor.cor("kuwabara_kono", s.gamma, s.g, digits=30)
+        physical = viscor.cor("kuwabara_kono", gamma0="8.49e-7", digits=30, **self.BEAD)
+        self.assertEqual(physical.e, direct.e)
+
+    def test_gravity_never_defaults(self):
+        with self.assertRaisesRegex(ValueError, "gravity"):
+            viscor.cor("kuwabara_kono", m="2.05e-3", k="6.9716e9", v0="0.246", gamma0="8.49e-7")
+        with self.assertRaisesRegex(ValueError, "not both"):
+            viscor.cor("kuwabara_kono", "0.1", gamma0="8.49e-7", **self.BEAD)
+        with self.assertRaisesRegex(TypeError, "mass"):
+            viscor.cor("kuwabara_kono", "0.1", mass=1)
+
+    @unittest.skipIf(np is None, "needs numpy")
+    def test_evaluate_broadcasts_physical_arrays(self):
+        v0 = np.array([0.05, 0.246, 1.0])
+        r = viscor.evaluate("kuwabara_kono", m=2.05e-3, k=6.9716e9, v0=v0[:, None], gamma0=8.49e-7,
+                            gravity=np.array([0.0, 9.8]), tol=1e-9)
+        self.assertEqual(r.e.shape, (3, 2))
+        for i, speed in enumerate(v0):
+            for j, grav in enumerate((0.0, 9.8)):
+                ref = viscor.cor("kuwabara_kono", m="2.05e-3", k="6.9716e9", v0=float(speed), gamma0="8.49e-7",
+                                 gravity=grav, digits=30)
+                self.assertLessEqual(abs(r.e[i, j] - float(ref.e)), 1e-9 + 1e-15, (speed, grav))
+        with self.assertRaisesRegex(ValueError, "gravity"):
+            viscor.evaluate("kuwabara_kono", m=2.05e-3, k=6.9716e9, v0=v0, gamma0=8.49e-7)
+
+
 class Scale(unittest.TestCase):
     @unittest.skipIf(mpmath is None, "needs mpmath")
     def test_equation_2(self):

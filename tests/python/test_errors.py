@@ -69,7 +69,7 @@ class BadInputRaises(unittest.TestCase):
     def test_commands(self):
         self.check(ValueError, ["gravity"], viscor.scale, "kuwabara_kono", m="2.05e-3", k="6.9716e9",
                    gamma0="8.49e-7", v0="0.246")
-        self.check(ValueError, ["--no-such-option"], viscor.scale, "linear", no_such_option=1)
+        self.check(TypeError, ["no_such_option"], viscor.scale, "linear", no_such_option=1)
         self.check(TypeError, ["no_such_option"], viscor.exact, "linear", "0.1", 0, no_such_option=1)
         self.check(ValueError, ["target"], viscor.calibrate, "tsuji", "1.5", g="0.1")
         # A file that cannot be read is a viscor.Error (as the library classifies it), naming the file.

@@ -32,6 +32,30 @@ inline void require_gravity_towards_wall(const std::optional<std::string>& text)
   if (text && std::strtod(text->c_str(), nullptr) < 0) throw invalid_parameter("--" + negative_gravity_message(*text));
 }
 
+/// The bead (m, k) of a Hertz sphere of a material on a rigid wall: the stiffness
+/// from Young's modulus, the Poisson ratio and the radius; the mass given, or from
+/// the density. Holds only for alpha = 3/2 (refused otherwise, naming the law).
+template <class Real>
+std::pair<Real, Real> bead_of_material(const contact_law& law, const Real& youngs_modulus, const Real& poisson_ratio,
+                                       const Real& radius, const std::optional<Real>& mass,
+                                       const std::optional<Real>& density) {
+  if (!(law.alpha == exponent::rational(3, 2)))
+    throw invalid_parameter("--youngs-modulus gives a Hertz stiffness, which holds only for alpha = 3/2; the law has "
+                            "alpha = " + law.alpha.to_string() + ": give --k instead");
+  require_positive(radius, "radius");
+  elastic_material<Real> material{youngs_modulus, poisson_ratio};
+  material.validate("bead");
+  Real m;
+  if (mass) {
+    m = *mass;
+  } else {
+    require_positive(*density, "density");
+    m = sphere_mass(*density, radius);
+  }
+  return {m, hertz_stiffness(effective_modulus<Real>(material, std::nullopt), radius)};
+}
+
+/// The physical inputs as text, with their completeness and unit checks.
 struct physical_inputs {
   std::optional<std::string> m, k, v0, gamma0, gravity, force;
   std::optional<std::string> youngs_modulus, poisson_ratio, radius, density;
@@ -96,23 +120,11 @@ struct physical_inputs {
   template <class Real>
   std::pair<Real, Real> bead(const contact_law& law) const {
     if (!has_material()) return {parse_real<Real>(*m, "m"), parse_real<Real>(*k, "k")};
-    if (!(law.alpha == exponent::rational(3, 2)))
-      throw invalid_parameter("--youngs-modulus gives a Hertz stiffness, which holds only for alpha = 3/2; the law has "
-                              "alpha = " + law.alpha.to_string() + ": give --k instead");
-    const Real r = parse_real<Real>(*radius, "radius");
-    require_positive(r, "radius");
-    elastic_material<Real> material{parse_real<Real>(*youngs_modulus, "youngs_modulus"),
-                                    parse_real<Real>(*poisson_ratio, "poisson_ratio")};
-    material.validate("bead");
-    Real mass;
-    if (m) {
-      mass = parse_real<Real>(*m, "m");
-    } else {
-      const Real rho = parse_real<Real>(*density, "density");
-      require_positive(rho, "density");
-      mass = sphere_mass(rho, r);
-    }
-    return {mass, hertz_stiffness(effective_modulus<Real>(material, std::nullopt), r)};
+    const std::optional<Real> mass = m ? std::optional<Real>(parse_real<Real>(*m, "m")) : std::nullopt;
+    const std::optional<Real> rho = density ? std::optional<Real>(parse_real<Real>(*density, "density")) : std::nullopt;
+    return bead_of_material<Real>(law, parse_real<Real>(*youngs_modulus, "youngs_modulus"),
+                                  parse_real<Real>(*poisson_ratio, "poisson_ratio"), parse_real<Real>(*radius, "radius"),
+                                  mass, rho);
   }
 
   /// Every physical input at the working precision (call check() first); gamma0 0 when absent.

@@ -1,0 +1,206 @@
+// The one-shot jobs of viscor._viscor: exact, approx, scale, calibrate, dem and cor
+// with physical inputs, each a call of the library's job (include/viscor/jobs/)
+// without the GIL, returning the job's JSON object as Python objects. Inputs arrive
+// as the exact decimal text the Python layer made of them (python/viscor/_inputs.py).
+#include <viscor/certify/extern_templates.hpp>  // first: the solvers are compiled once, in libviscor
+
+#include "python_objects.hpp"
+
+#include <viscor/jobs/approx_job.hpp>
+#include <viscor/jobs/calibrate_job.hpp>
+#include <viscor/jobs/cor_job.hpp>
+#include <viscor/jobs/dem_job.hpp>
+#include <viscor/jobs/exact_job.hpp>
+#include <viscor/jobs/physical_inputs.hpp>
+#include <viscor/jobs/scale_job.hpp>
+
+#include <viscor/core/scaling.hpp>
+
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <map>
+#include <optional>
+#include <string>
+
+namespace py = pybind11;
+
+namespace viscor::python {
+namespace {
+
+using text_fields = std::map<std::string, std::string>;
+
+// The physical inputs named by the keywords of the Python functions (m=, k=, ...).
+jobs::physical_inputs physical_of(const text_fields& fields, bool strict) {
+  jobs::physical_inputs p;
+  const std::map<std::string, std::optional<std::string>*> slots{
+      {"m", &p.m},           {"k", &p.k},
+      {"v0", &p.v0},         {"gamma0", &p.gamma0},
+      {"gravity", &p.gravity}, {"force", &p.force},
+      {"youngs_modulus", &p.youngs_modulus}, {"poisson_ratio", &p.poisson_ratio},
+      {"radius", &p.radius}, {"density", &p.density}};
+  for (const auto& [name, value] : fields) {
+    const auto slot = slots.find(name);
+    if (slot == slots.end()) throw invalid_parameter("unknown physical input '" + name + "'");
+    *slot->second = value;
+  }
+  p.strict = strict;
+  return p;
+}
+
+std::optional<std::string> optional_text(const std::string& text) {
+  return text.empty() ? std::nullopt : std::optional<std::string>(text);
+}
+
+// Runs a job without the GIL and returns its JSON object as Python objects.
+template <class Job>
+py::object run_released(const Job& job) {
+  jobs::command_output out;
+  {
+    py::gil_scoped_release release;
+    out = job();
+  }
+  return to_python(out.object);
+}
+
+py::object exact(const std::string& name, const std::string& alpha, const std::string& beta, const std::string& gamma,
+                 const std::string& g, int digits) {
+  jobs::exact_request q;
+  q.law = jobs::resolve_law(name, alpha, beta);
+  q.gamma = gamma, q.g = g, q.digits = digits;
+  return run_released([&] { return jobs::run_exact(q); });
+}
+
+py::object approx(const std::string& name, const std::string& alpha, const std::string& beta, const std::string& gamma,
+                  const std::string& g, const std::string& formula, const std::string& source, int order, int digits) {
+  jobs::approx_request q;
+  q.law = jobs::resolve_law(name, alpha, beta);
+  q.gamma = gamma, q.g = g, q.formula = formula, q.source = source, q.order = order, q.digits = digits;
+  return run_released([&] { return jobs::run_approx(q); });
+}
+
+py::object scale(const std::string& name, const std::string& alpha, const std::string& beta,
+                 const text_fields& physical, const std::string& gamma, const std::string& g, int digits, bool strict) {
+  jobs::scale_request q;
+  q.law = jobs::resolve_law(name, alpha, beta);
+  q.physical = physical_of(physical, strict);
+  q.gamma = optional_text(gamma), q.g = optional_text(g), q.digits = digits;
+  return run_released([&] { return jobs::run_scale(q); });
+}
+
+py::object calibrate(const std::string& name, const std::string& alpha, const std::string& beta,
+                     const text_fields& physical, const std::string& target_e, const std::string& g,
+                     const std::string& tolerance, const std::string& gamma_max, const std::string& method, int digits,
+                     bool strict) {
+  jobs::calibrate_request q;
+  q.law = jobs::resolve_law(name, alpha, beta);
+  q.physical = physical_of(physical, strict);
+  q.target_e = optional_text(target_e), q.g = optional_text(g);
+  q.tolerance = tolerance, q.gamma_max = gamma_max, q.method = method, q.digits = digits;
+  return run_released([&] { return jobs::run_calibrate(q); });
+}
+
+py::object dem(const text_fields& fields, int digits, bool strict) {
+  jobs::dem_request q;
+  const std::map<std::string, std::string*> slots{
+      {"code", &q.code},           {"damping", &q.damping},
+      {"contact", &q.contact},     {"youngs_modulus", &q.youngs_modulus},
+      {"poisson_ratio", &q.poisson_ratio}, {"k", &q.stiffness},
+      {"radius", &q.radius},       {"density", &q.density},
+      {"target_e", &q.target_e},   {"deck_damping", &q.deck_damping},
+      {"deck_en", &q.deck_en},     {"v0", &q.v0},
+      {"gravity", &q.gravity},     {"force", &q.force},
+      {"speeds", &q.speeds},       {"drop_deck", &q.drop_deck_path}};
+  for (const auto& [name, value] : fields) {
+    const auto slot = slots.find(name);
+    if (slot == slots.end()) throw invalid_parameter("dem: unknown input '" + name + "'");
+    *slot->second = value;
+  }
+  q.digits = digits, q.strict = strict;
+  return run_released([&] { return jobs::run_dem(q); });
+}
+
+// One impact from its physical inputs (the physical mode of `viscor cor`).
+py::object physical_cor(const std::string& name, const std::string& alpha, const std::string& beta,
+                        const text_fields& physical, int digits, bool certify, const std::string& method,
+                        const std::string& tolerance, long long max_steps, bool strict) {
+  jobs::cor_request q;
+  q.law = jobs::resolve_law(name, alpha, beta);
+  q.physical = physical_of(physical, strict);
+  q.method = jobs::parse_integration_method(method, "method");
+  q.tolerance = tolerance, q.digits = digits, q.certify = certify;
+  if (max_steps < 0) throw invalid_parameter("max_steps must be >= 1, got " + std::to_string(max_steps));
+  if (max_steps > 0) q.max_steps = static_cast<std::size_t>(max_steps);
+  return run_released([&] { return jobs::run_cor(q); });
+}
+
+using double_array = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+// Scaled (gamma, g) of flat arrays of physical inputs of one size, in double. The
+// bead is (m, k), or a material (youngs_modulus, poisson_ratio, radius, and m or
+// density): absent arrays are empty. Refuses the first bad point by its index.
+py::tuple scaled_arrays(const std::string& name, const std::string& alpha, const std::string& beta,
+                        const std::map<std::string, double_array>& columns) {
+  const contact_law law = jobs::resolve_law(name, alpha, beta);
+  const auto column = [&](const char* key) -> const double* {
+    const auto it = columns.find(key);
+    return it == columns.end() ? nullptr : it->second.data();
+  };
+  py::ssize_t n = 0;
+  for (const auto& [key, a] : columns) n = a.size();
+  for (const auto& [key, a] : columns)
+    if (a.size() != n) throw invalid_parameter("evaluate: the physical inputs must broadcast to one shape");
+  const double *m = column("m"), *k = column("k"), *v0 = column("v0"), *gamma0 = column("gamma0"),
+               *gravity = column("gravity"), *force = column("force"), *E = column("youngs_modulus"),
+               *nu = column("poisson_ratio"), *radius = column("radius"), *density = column("density");
+  py::array_t<double> gamma(n), g(n);
+  double* pg = gamma.mutable_data();
+  double* pgg = g.mutable_data();
+  py::ssize_t i = 0;
+  try {
+    py::gil_scoped_release release;
+    for (; i < n; ++i) {
+      physical_parameters<double> p;
+      if (E) {
+        std::tie(p.m, p.k) = jobs::bead_of_material<double>(
+            law, E[i], nu[i], radius[i], m ? std::optional<double>(m[i]) : std::nullopt,
+            density ? std::optional<double>(density[i]) : std::nullopt);
+      } else {
+        p.m = m[i], p.k = k[i];
+      }
+      p.v0 = v0[i], p.gamma0 = gamma0[i], p.gravity = gravity[i], p.force = force ? force[i] : 0.0;
+      p.validate();
+      const scaled_parameters<double> s = to_scaled(law, p);
+      pg[i] = s.gamma, pgg[i] = s.g;
+    }
+  } catch (const invalid_parameter& e) {
+    throw invalid_parameter("evaluate: point " + std::to_string(i) + ": " + e.what());
+  }
+  return py::make_tuple(gamma, g);
+}
+
+}  // namespace
+
+void bind_commands(py::module_& m) {
+  m.def("exact", &exact, py::arg("name"), py::arg("alpha"), py::arg("beta"), py::arg("gamma"), py::arg("g"),
+        py::arg("digits"), "The exact job (jobs/exact_job.hpp): the object of `viscor exact --json`.");
+  m.def("approx", &approx, py::arg("name"), py::arg("alpha"), py::arg("beta"), py::arg("gamma"), py::arg("g"),
+        py::arg("formula"), py::arg("source"), py::arg("order"), py::arg("digits"),
+        "The approx job (jobs/approx_job.hpp): the object of `viscor approx --json`.");
+  m.def("scale", &scale, py::arg("name"), py::arg("alpha"), py::arg("beta"), py::arg("physical"), py::arg("gamma"),
+        py::arg("g"), py::arg("digits"), py::arg("strict"),
+        "The scale job (jobs/scale_job.hpp): the object of `viscor scale --json`.");
+  m.def("calibrate", &calibrate, py::arg("name"), py::arg("alpha"), py::arg("beta"), py::arg("physical"),
+        py::arg("target_e"), py::arg("g"), py::arg("tolerance"), py::arg("gamma_max"), py::arg("method"),
+        py::arg("digits"), py::arg("strict"),
+        "The calibrate job (jobs/calibrate_job.hpp): the object of `viscor calibrate --json`.");
+  m.def("dem", &dem, py::arg("fields"), py::arg("digits"), py::arg("strict"),
+        "The dem job (jobs/dem_job.hpp): the object of `viscor dem --json`.");
+  m.def("physical_cor", &physical_cor, py::arg("name"), py::arg("alpha"), py::arg("beta"), py::arg("physical"),
+        py::arg("digits"), py::arg("certify"), py::arg("method"), py::arg("tolerance"), py::arg("max_steps"),
+        py::arg("strict"), "The cor job from physical inputs (jobs/cor_job.hpp): the object of `viscor cor --json`.");
+  m.def("scaled_arrays", &scaled_arrays, py::arg("name"), py::arg("alpha"), py::arg("beta"), py::arg("columns"),
+        "Flat float64 arrays of physical inputs -> (gamma, g) arrays by the report's scaling, in double.");
+}
+
+}  // namespace viscor::python
