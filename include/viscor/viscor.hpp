@@ -63,11 +63,20 @@
 // The jobs need nlohmann-json: they are part of the umbrella where the target
 // viscor::jobs (which defines VISCOR_WITH_JOBS) is linked.
 #if defined(VISCOR_WITH_JOBS)
+#include <viscor/jobs/approx_job.hpp>
+#include <viscor/jobs/calibrate_job.hpp>
 #include <viscor/jobs/cor_job.hpp>
 #include <viscor/jobs/data_directory.hpp>
+#include <viscor/jobs/dem_job.hpp>
+#include <viscor/jobs/errormap_job.hpp>
+#include <viscor/jobs/exact_job.hpp>
+#include <viscor/jobs/physical_inputs.hpp>
 #include <viscor/jobs/point_batch.hpp>
+#include <viscor/jobs/report_job.hpp>
+#include <viscor/jobs/scale_job.hpp>
 #include <viscor/jobs/scene_file.hpp>
 #include <viscor/jobs/scene_job.hpp>
+#include <viscor/jobs/surrogate_build.hpp>
 #include <viscor/jobs/surrogate_files.hpp>
 #include <viscor/jobs/table_jobs.hpp>
 #if defined(VISCOR_WITH_ENCLOSE)

@@ -20,7 +20,7 @@ from ._viscor import (CertificationError, ConvergenceError, Error, InvalidParame
 from ._inputs import NAMED_LAWS, check_digits as _check_digits, law_texts as _law_texts, number_text as _text
 from ._result import Result
 from ._table import Table
-from ._commands import (Points, approx, calibrate, cor_points, dem, exact, run_cli, scale, scene, table, read_table,
+from ._commands import (Points, Scene, approx, calibrate, cor_points, dem, exact, run_cli, scale, scene, table, read_table,
                         find_surrogate)
 from ._evaluate import EVALUATION_METHODS, Evaluation, evaluate
 
@@ -36,7 +36,7 @@ git_commit = _viscor.git_commit
 max_working_digits = _viscor.max_working_digits
 
 __all__ = ["cor", "cor_points", "Points", "exact", "approx", "calibrate", "scale", "table", "read_table", "scene", "dem", "evaluate",
-           "Evaluation", "EVALUATION_METHODS", "Surrogate", "find_surrogate", "run_cli", "Result", "Table", "NAMED_LAWS",
+           "Evaluation", "EVALUATION_METHODS", "Surrogate", "find_surrogate", "run_cli", "Result", "Table", "Scene", "NAMED_LAWS",
            "Error", "InvalidParameter", "PrecisionUnavailable", "ParseError", "ConvergenceError",
            "CertificationError", "data_directory"]
 

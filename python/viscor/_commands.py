@@ -142,16 +142,37 @@ def dem(code, *, digits=15, strict=False, **options):
     return Result(_viscor.dem(fields, check_digits(digits), _flag(strict, "strict")))
 
 
+def _float_column(strings):
+    import numpy
+    return numpy.array([float(v) if v not in (None, "") else float("nan") for v in strings], dtype=numpy.float64)
+
+
+class Scene(Result):
+    """The result of scene(): the fields of ``viscor scene --json``, with columns
+    across its impacts (``rows``)."""
+
+    __slots__ = ()
+
+    def strings(self, name):
+        """Field `name` of every impact as its exact decimal string (None where absent)."""
+        return [row.get(name) for row in self._fields.get("rows", [])]
+
+    def column(self, name):
+        """Field `name` of every impact as a NumPy float64 array (NaN where absent)."""
+        return _float_column(self.strings(name))
+
+
 def scene(file, out=None, *, error_maps=None):
     """Every impact of a scene file to its tolerance (the scene job, as ``viscor scene``,
     docs/scenes.md).
 
-    Without `out`: a Result with the fields of ``viscor scene --json``. With `out`:
+    Without `out`: a Scene (a Result with the fields of ``viscor scene --json``, and
+    its impacts' fields as columns: ``s.column('e')``, ``s.strings('e')``). With `out`:
     writes it (CSV, or JSON when it ends in .json) like ``-o``, only on success, and
     returns the path."""
     maps = "" if error_maps is None else os.fspath(error_maps)
     if out is None:
-        return Result(_viscor.scene(os.fspath(file), maps, ""))
+        return Scene(_viscor.scene(os.fspath(file), maps, ""))
     _viscor.scene(os.fspath(file), maps, os.fspath(out))
     return os.fspath(out)
 
@@ -223,9 +244,7 @@ class Points(list):
 
     def column(self, name):
         """Field `name` of every point as a NumPy float64 array (NaN where absent)."""
-        import numpy
-        return numpy.array([float(v) if v not in (None, "") else float("nan") for v in self.strings(name)],
-                           dtype=numpy.float64)
+        return _float_column(self.strings(name))
 
 
 def cor_points(points, digits=15, *, threads=1, method="taylor", tolerance="0", max_steps=None):

@@ -289,6 +289,9 @@ class Scene(unittest.TestCase):
         self.assertGreater(r.impacts, 0)
         for row in r.rows:
             self.assertLessEqual(float(row.empirical_bound), float(r.tolerance))
+        self.assertEqual(r.strings("e"), [row.e for row in r.rows])
+        if np is not None:
+            self.assertTrue(np.array_equal(r.column("e"), np.array([float(row.e) for row in r.rows])))
         with tempfile.TemporaryDirectory() as tmp:
             out = viscor.scene(path, os.path.join(tmp, "steel.csv"))
             self.assertTrue(os.path.getsize(out) > 0)
