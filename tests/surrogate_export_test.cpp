@@ -30,7 +30,7 @@ namespace fs = std::filesystem;
 using viscor::jobs::surrogate_export_options;
 
 std::string source_dir() { return VISCOR_SOURCE_DIR; }
-std::string surrogate_dir() { return source_dir() + "/reference_data/surrogates"; }
+std::string surrogate_dir() { return VISCOR_SOURCE_DIR "/reference_data/surrogates"; }
 
 // A scratch directory under the build tree, beside the test program.
 fs::path scratch(const std::string& name) {

@@ -57,7 +57,7 @@
  * error of 1 - e where gamma <= 1e-2 and e >= 1e-2; the outcome is correct except within
  * relative 1e-10 in g of the sticking threshold. Measured maxima per region at export
  * (this code gives the library's values: docs/surrogate.md, "Exporting to C"):
- *   law / region     points   max|de|    max|de^2|  max rel d(1-e)  wrong outcomes
+ *   law / region       points   max|de|    max|de^2|  rel d(1-e)  wrong outcomes
  *   linear (bound: 1.06e-13, 1.20e-14, 4.92e-14)
  *      all              20000   5.31e-14   5.99e-15   2.46e-14        0
  *      small_gamma       9914   2.44e-14   2.74e-15   2.46e-14        0

@@ -195,7 +195,7 @@ inline std::string c_comment(const std::string& file, const std::vector<law_expo
     << " * error of 1 - e where gamma <= 1e-2 and e >= 1e-2; the outcome is correct except within\n"
     << " * relative 1e-10 in g of the sticking threshold. Measured maxima per region at export\n"
     << " * (this code gives the library's values: docs/surrogate.md, \"Exporting to C\"):\n"
-    << " *   law / region     points   max|de|    max|de^2|  max rel d(1-e)  wrong outcomes\n";
+    << " *   law / region       points   max|de|    max|de^2|  rel d(1-e)  wrong outcomes\n";
   for (const auto& l : laws) {
     o << " *   " << l.name << " (bound: " << sci(l.s.bound.abs_e) << ", " << sci(l.s.bound.abs_e_squared) << ", "
       << sci(l.s.bound.rel_one_minus_e) << ")\n";
