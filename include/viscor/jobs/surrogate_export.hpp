@@ -19,6 +19,7 @@
 #include <viscor/surrogate/surrogate_verify.hpp>
 #include <viscor/tables/reference_table.hpp>
 
+#include <cctype>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
