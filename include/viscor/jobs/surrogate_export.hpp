@@ -679,7 +679,11 @@ inline std::vector<exported_file> surrogate_export_files(const surrogate_export_
 inline std::vector<std::string> export_surrogates(const surrogate_export_options& options) {
   if (options.output_directory.empty()) throw invalid_parameter("surrogate export needs an output directory: -o DIR");
   const auto files = surrogate_export_files(options);
-  std::filesystem::create_directories(options.output_directory);
+  std::error_code ec;
+  if (std::filesystem::exists(options.output_directory, ec) && !std::filesystem::is_directory(options.output_directory, ec))
+    throw invalid_parameter("surrogate export: output '" + options.output_directory + "' exists and is not a directory");
+  std::filesystem::create_directories(options.output_directory, ec);
+  if (ec) throw error("surrogate export: cannot create the directory '" + options.output_directory + "': " + ec.message());
   std::vector<std::string> paths;
   for (const auto& f : files) {
     const std::string path = options.output_directory + "/" + f.name;
