@@ -56,7 +56,9 @@
  * factor of 2, for |e_s - e| where e >= 1e-2, |e_s^2 - e^2| everywhere, and the relative
  * error of 1 - e where gamma <= 1e-2 and e >= 1e-2; the outcome is correct except within
  * relative 1e-10 in g of the sticking threshold. Measured maxima per region at export
- * (this code gives the library's values: docs/surrogate.md, "Exporting to C"):
+ * (this code gives the library's values: docs/surrogate.md, "Exporting to C"); the
+ * regions overlap: small_gamma gamma <= 1e-2, near_threshold within relative 5% in g
+ * of the threshold, large_g g >= 100, negative_g g < 0:
  *   law / region       points   max|de|    max|de^2|  rel d(1-e)  wrong outcomes
  *   linear (bound: 1.06e-13, 1.20e-14, 4.92e-14)
  *      all              20000   5.31e-14   5.99e-15   2.46e-14        0

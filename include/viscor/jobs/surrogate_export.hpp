@@ -195,7 +195,9 @@ inline std::string c_comment(const std::string& file, const std::vector<law_expo
     << " * factor of 2, for |e_s - e| where e >= 1e-2, |e_s^2 - e^2| everywhere, and the relative\n"
     << " * error of 1 - e where gamma <= 1e-2 and e >= 1e-2; the outcome is correct except within\n"
     << " * relative 1e-10 in g of the sticking threshold. Measured maxima per region at export\n"
-    << " * (this code gives the library's values: docs/surrogate.md, \"Exporting to C\"):\n"
+    << " * (this code gives the library's values: docs/surrogate.md, \"Exporting to C\"); the\n"
+    << " * regions overlap: small_gamma gamma <= 1e-2, near_threshold within relative 5% in g\n"
+    << " * of the threshold, large_g g >= 100, negative_g g < 0:\n"
     << " *   law / region       points   max|de|    max|de^2|  rel d(1-e)  wrong outcomes\n";
   for (const auto& l : laws) {
     o << " *   " << l.name << " (bound: " << sci(l.s.bound.abs_e) << ", " << sci(l.s.bound.abs_e_squared) << ", "
