@@ -77,6 +77,7 @@
 #include <viscor/jobs/scene_file.hpp>
 #include <viscor/jobs/scene_job.hpp>
 #include <viscor/jobs/surrogate_build.hpp>
+#include <viscor/jobs/surrogate_export.hpp>
 #include <viscor/jobs/surrogate_files.hpp>
 #include <viscor/jobs/table_jobs.hpp>
 #if defined(VISCOR_WITH_ENCLOSE)

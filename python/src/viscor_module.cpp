@@ -21,6 +21,7 @@
 #include <viscor/jobs/unit_checks.hpp>
 #include <viscor/jobs/data_directory.hpp>
 #include <viscor/jobs/surrogate_files.hpp>
+#include <viscor/jobs/surrogate_export.hpp>
 
 #include <viscor/core/precision.hpp>
 #include <viscor/impact/solve_impact.hpp>
@@ -487,4 +488,16 @@ PYBIND11_MODULE(_viscor, m) {
            py::arg("surrogate"), py::arg("threads"))
       .def("__call__", &vp::evaluate, py::arg("gamma"), py::arg("g"), py::arg("tol"),
            "Flat float64 arrays of one size -> (e, one_minus_e, bound, method code, outcome code).");
+
+  // The committed surrogates as C99 files (jobs/surrogate_export.hpp); viscor.export_surrogates wraps it.
+  m.def("surrogate_export",
+        [](const std::string& output, const std::vector<std::string>& laws, const std::string& language,
+           const std::string& directory) {
+          viscor::jobs::surrogate_export_options o;
+          o.output_directory = output, o.laws = laws, o.language = language;
+          o.surrogate_directory = directory.empty() ? viscor::jobs::surrogate_directory() : directory;
+          return viscor::jobs::export_surrogates(o);
+        },
+        py::arg("output"), py::arg("laws"), py::arg("language"), py::arg("surrogate_directory"),
+        "Writes the C export into `output`; returns the paths written.");
 }

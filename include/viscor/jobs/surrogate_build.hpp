@@ -9,6 +9,7 @@
 #include <viscor/jobs/files.hpp>
 #include <viscor/jobs/json_fields.hpp>
 #include <viscor/jobs/provenance.hpp>
+#include <viscor/jobs/surrogate_files.hpp>
 #include <viscor/jobs/table_runner.hpp>
 
 #include <viscor/config.hpp>
@@ -256,21 +257,6 @@ inline std::string certify_verification_points(const surrogate_build_request& q,
   return table;
 }
 
-// The certified values of a verification table, in the surrogate's types.
-inline std::vector<surrogate::reference_value> read_verification_table(const std::string& table) {
-  const csv_table rows = read_table(table);
-  std::vector<surrogate::reference_value> refs;
-  for (const auto& r : rows.rows) {
-    surrogate::reference_value v;
-    v.gamma = std::strtod(r.fields[4].c_str(), nullptr), v.g = std::strtod(r.fields[5].c_str(), nullptr);
-    v.outcome = r.fields[6] == "stick" ? impact_outcome::stick : impact_outcome::rebound;
-    v.e = std::strtold(r.fields[7].c_str(), nullptr), v.one_minus_e = std::strtold(r.fields[8].c_str(), nullptr);
-    v.digits = std::stoi(r.fields[11]);
-    refs.push_back(v);
-  }
-  return refs;
-}
-
 // Compares, states the bounds in s.bound, and refuses (throws) if they miss the
 // spec's targets; returns the statistics per region for the sidecar.
 inline json state_bounds(surrogate::cor_surrogate& s, const surrogate_spec& spec,
@@ -338,7 +324,7 @@ inline bool build_surrogate(const surrogate_build_request& q) {
         "this build again with --resume to verify and write '" + output + "'");
     return false;
   }
-  const json stats = state_bounds(s, spec, read_verification_table(table), output, table);
+  const json stats = state_bounds(s, spec, read_verification_rows(table), output, table);
   std::ostringstream body;
   write_cor_surrogate(body, s);
   write_atomically(output, body.str());

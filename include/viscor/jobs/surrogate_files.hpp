@@ -8,6 +8,8 @@
 #include <viscor/jobs/data_directory.hpp>
 
 #include <viscor/surrogate/cor_surrogate.hpp>
+#include <viscor/surrogate/surrogate_verify.hpp>
+#include <viscor/tables/reference_table.hpp>
 
 #include <cstdlib>
 #include <filesystem>
@@ -15,8 +17,27 @@
 #include <memory>
 #include <mutex>
 #include <string>
+#include <vector>
 
 namespace viscor::jobs {
+
+/// The certified rows of a surrogate's verification table (FILE.verification.csv,
+/// a CoR table) in the surrogate's types: the truth its bounds are measured against.
+inline std::vector<surrogate::reference_value> read_verification_rows(const std::string& path) {
+  const csv_table table = read_table(path);
+  std::vector<surrogate::reference_value> refs;
+  for (const auto& r : table.rows) {
+    const auto& f = r.fields;
+    if (f.size() < 12) throw parse_error(path + ": a verification row needs 12 fields");
+    surrogate::reference_value v;
+    v.gamma = std::strtod(f[4].c_str(), nullptr), v.g = std::strtod(f[5].c_str(), nullptr);
+    v.outcome = f[6] == "stick" ? impact_outcome::stick : impact_outcome::rebound;
+    v.e = std::strtold(f[7].c_str(), nullptr), v.one_minus_e = std::strtold(f[8].c_str(), nullptr);
+    v.digits = std::atoi(f[11].c_str());
+    refs.push_back(v);
+  }
+  return refs;
+}
 
 /// The directory of the committed surrogates: $VISCOR_SURROGATE_DIR, else
 /// <data directory>/surrogates.

@@ -1,0 +1,105 @@
+// Time per evaluation of the C export of the committed surrogates
+// (examples/c_export/viscor_surrogates.c, compiled as C99 by the C compiler, baseline
+// target, no FMA instruction: every fma a libm call) next to the library's
+// cor_surrogate (run-time FMA path where the CPU has it) on the same points;
+// docs/performance.md ("Surrogates", "The C export") has the figures.
+//   BM_library/<law>/<stream>, BM_exported_c/<law>/<stream>: one pass over the stream of
+//     surrogate_bench (16,384 timing_points; /rebound: the rebounds among them);
+//     Google Benchmark's time is one pass, time per evaluation = time / points
+//     (items_per_second is its inverse).
+//   BM_library_gamma_for/<law>, BM_exported_c_gamma_for/<law>: the inverse on the 1024
+//     (e, g) of surrogate_bench's BM_gamma_for.
+// Run: ./build/benchmarks/surrogate_export_bench (Release, -DVISCOR_BUILD_BENCHMARKS=ON).
+#include <viscor/surrogate/cor_surrogate.hpp>
+#include <viscor/surrogate/surrogate_timing.hpp>
+
+#include "viscor_surrogates.h"  // examples/c_export/ (the committed export)
+
+#include <benchmark/benchmark.h>
+
+#include <map>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace {
+
+using viscor::surrogate::cor_surrogate;
+using viscor::surrogate::timing_point;
+
+const cor_surrogate& load(const std::string& law) {
+  static std::map<std::string, cor_surrogate> cache;
+  auto it = cache.find(law);
+  if (it == cache.end())
+    it = cache.emplace(law, viscor::surrogate::read_cor_surrogate(std::string(VISCOR_SOURCE_DIR) +
+                                                                  "/reference_data/surrogates/" + law + ".surrogate"))
+             .first;
+  return it->second;
+}
+
+std::vector<timing_point> stream(const cor_surrogate& s, bool rebound_only) {
+  const auto all = viscor::surrogate::timing_points(s, 16384);
+  return rebound_only ? viscor::surrogate::points_with_outcome(s, all, viscor::impact_outcome::rebound) : all;
+}
+
+void BM_library(benchmark::State& state, const std::string& law, bool rebound_only) {
+  const cor_surrogate& s = load(law);
+  const auto points = stream(s, rebound_only);
+  for (auto _ : state)
+    for (const auto& p : points) benchmark::DoNotOptimize(s(p.gamma, p.g).e);
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * points.size()));
+}
+
+void BM_exported_c(benchmark::State& state, const std::string& law, bool rebound_only) {
+  const viscor_surrogate* c = viscor_surrogate_named(law.c_str());
+  if (!c) return state.SkipWithError("law not in the export");
+  const auto points = stream(load(law), rebound_only);
+  for (auto _ : state)
+    for (const auto& p : points) benchmark::DoNotOptimize(viscor_cor_at(c, p.gamma, p.g).e);
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * points.size()));
+}
+
+// The (e, g) of surrogate_bench's BM_gamma_for.
+std::pair<std::vector<double>, std::vector<timing_point>> inverse_inputs(const cor_surrogate& s) {
+  const auto points = viscor::surrogate::timing_points(s, 1024);
+  std::mt19937_64 rng(77);
+  std::vector<double> targets;
+  for (std::size_t i = 0; i < points.size(); ++i) targets.push_back(0.01 + 0.98999 * static_cast<double>(rng() >> 11) * 0x1.0p-53);
+  return {targets, points};
+}
+
+void BM_library_gamma_for(benchmark::State& state, const std::string& law) {
+  const cor_surrogate& s = load(law);
+  const auto [targets, points] = inverse_inputs(s);
+  for (auto _ : state)
+    for (std::size_t i = 0; i < points.size(); ++i) benchmark::DoNotOptimize(s.gamma_for(targets[i], points[i].g));
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * points.size()));
+}
+
+void BM_exported_c_gamma_for(benchmark::State& state, const std::string& law) {
+  const viscor_surrogate* c = viscor_surrogate_named(law.c_str());
+  if (!c) return state.SkipWithError("law not in the export");
+  const auto [targets, points] = inverse_inputs(load(law));
+  for (auto _ : state)
+    for (std::size_t i = 0; i < points.size(); ++i) benchmark::DoNotOptimize(viscor_gamma_for(c, targets[i], points[i].g));
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * points.size()));
+}
+
+const int registered = [] {
+  for (const char* law : {"linear", "hertz_linear_damping", "tsuji", "kuwabara_kono", "hunt_crossley"}) {
+    for (const bool rebound_only : {false, true}) {
+      const std::string suffix = std::string("/") + law + (rebound_only ? "/rebound" : "/mixed");
+      benchmark::RegisterBenchmark(("BM_library" + suffix).c_str(), BM_library, std::string(law), rebound_only)
+          ->Unit(benchmark::kMicrosecond);
+      benchmark::RegisterBenchmark(("BM_exported_c" + suffix).c_str(), BM_exported_c, std::string(law), rebound_only)
+          ->Unit(benchmark::kMicrosecond);
+    }
+    benchmark::RegisterBenchmark((std::string("BM_library_gamma_for/") + law).c_str(), BM_library_gamma_for,
+                                 std::string(law))->Unit(benchmark::kMicrosecond);
+    benchmark::RegisterBenchmark((std::string("BM_exported_c_gamma_for/") + law).c_str(), BM_exported_c_gamma_for,
+                                 std::string(law))->Unit(benchmark::kMicrosecond);
+  }
+  return 0;
+}();
+
+}  // namespace

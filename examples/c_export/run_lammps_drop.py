@@ -1,0 +1,55 @@
+#!/usr/bin/env python3
+"""Builds the committed C export as a shared library with plain `cc` and runs
+lammps_drop.in (LAMMPS calling the export through its python command) three times:
+at dt = T/400 and T/800 with the loaded conversion, and at T/400 with the unloaded one.
+
+Checks: LAMMPS' Velocity Verlet with a velocity-dependent force is first order, so
+the error in e halves with the step (measured 1.1e-4 at T/400, 5.6e-5 at T/800):
+|e(T/800) - target| <= 1e-4, the ratio of the two errors in [1.5, 2.5], and the
+extrapolation 2 e(T/800) - e(T/400) within 5e-6 of the target (measured 5e-7: what
+is left is the surrogate's 1e-13 and the second-order part of the stepping error).
+The unloaded conversion must miss by more than 0.1 (measured: e = 0.298 for 0.5).
+Usage: run_lammps_drop.py SOURCE_DIR WORK_DIR [LMP]"""
+import os
+import re
+import subprocess
+import sys
+
+source, work = sys.argv[1], sys.argv[2]
+lmp = sys.argv[3] if len(sys.argv) > 3 else "lmp"
+os.makedirs(work, exist_ok=True)
+lib = os.path.join(work, "libviscor_surrogates.so")
+subprocess.run(["cc", "-std=c99", "-O2", "-shared", "-fPIC", os.path.join(source, "viscor_surrogates.c"), "-lm", "-o", lib],
+               check=True)
+
+
+def rebound_e(*variables):
+    command = [lmp, "-in", os.path.join(source, "lammps_drop.in"), "-log", "none", "-var", "lib", lib, *variables]
+    out = subprocess.run(command, check=True, capture_output=True, text=True, cwd=work).stdout
+    for line in out.splitlines():
+        if line.startswith("viscor:"):
+            print(line)
+    found = re.search(r"^rebound e = (\S+) \(target (\S+)\)", out, re.M)
+    if not found:
+        sys.exit("no rebound e in the output of " + " ".join(command) + ":\n" + out)
+    print(f"rebound e = {found.group(1)} (target {found.group(2)})")
+    return float(found.group(1)), float(found.group(2))
+
+
+e400, target = rebound_e("-var", "per_T", "400")
+e800, _ = rebound_e("-var", "per_T", "800")
+unloaded, _ = rebound_e("-var", "per_T", "400", "-var", "conversion", "unloaded")
+d400, d800, extrapolated = abs(e400 - target), abs(e800 - target), abs(2 * e800 - e400 - target)
+print(f"|e - target|: {d400:.3e} at T/400, {d800:.3e} at T/800 (ratio {d400 / d800:.2f}); "
+      f"extrapolated {extrapolated:.3e}; unloaded conversion {abs(unloaded - target):.3e}")
+failures = []
+if not d800 <= 1e-4:
+    failures.append("e at T/800 misses the target by more than 1e-4")
+if not 1.5 <= d400 / d800 <= 2.5:
+    failures.append("the error does not halve with the step")
+if not extrapolated <= 5e-6:
+    failures.append("the extrapolated e misses the target by more than 5e-6")
+if not abs(unloaded - target) > 0.1:
+    failures.append("the unloaded conversion should miss by more than 0.1")
+if failures:
+    sys.exit("FAILED: " + "; ".join(failures))
