@@ -197,7 +197,7 @@ TEST(SurrogateExport, CompiledWithCcAgreesWithTheLibrary) {
   auto uniform = [&](double a, double b) { return a + (b - a) * static_cast<double>(rng() >> 11) * 0x1.0p-53; };
   for (std::size_t l = 0; l < laws.size(); ++l) {
     const auto& s = surrogates[l];
-    const auto rows = viscor::jobs::detail::verification_rows(surrogate_dir() + "/" + laws[l] + ".surrogate.verification.csv");
+    const auto rows = viscor::jobs::read_verification_rows(surrogate_dir() + "/" + laws[l] + ".surrogate.verification.csv");
     for (const auto& r : rows) requests.push_back({&s, laws[l], 'c', {r.gamma, r.g}});
     for (std::size_t i = 0; i < rows.size(); i += 10) requests.push_back({&s, laws[l], 't', {rows[i].g}});
     for (int i = 0; i < 2000; ++i) {  // the inverse, as docs/surrogate.md measures its round trip
