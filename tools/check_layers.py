@@ -33,6 +33,8 @@ ALLOWED = {
     # the jobs (tables, point batches, scenes, file formats, JSON fields) sit on everything
     "jobs": {"core", "exact", "ode", "impact", "certify", "approx", "tables", "scenes", "surrogate", "dem",
              "enclose"},
+    # GoogleTest assertions for outside formulas, on the jobs (target viscor::testing)
+    "testing": {"core", "approx", "tables", "scenes", "jobs"},
 }
 # The front ends parse options and print; the work is the library's (jobs/). These
 # words in src/cli/ mean threads, signal handling or a file format written by hand.

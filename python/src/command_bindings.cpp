@@ -11,8 +11,10 @@
 #include <viscor/jobs/cor_job.hpp>
 #include <viscor/jobs/dem_job.hpp>
 #include <viscor/jobs/exact_job.hpp>
+#include <viscor/jobs/formula_job.hpp>
 #include <viscor/jobs/physical_inputs.hpp>
 #include <viscor/jobs/scale_job.hpp>
+#include <viscor/jobs/table_jobs.hpp>
 
 #include <viscor/core/scaling.hpp>
 
@@ -179,6 +181,43 @@ py::tuple scaled_arrays(const std::string& name, const std::string& alpha, const
   return py::make_tuple(gamma, g);
 }
 
+// The certified points a formula of the named law is checked at: (gamma, g) arrays.
+py::tuple formula_points(const std::string& law) {
+  jobs::formula_reference r;
+  {
+    py::gil_scoped_release release;
+    r = jobs::committed_formula_reference(law_by_name(law));
+  }
+  py::array_t<double> gamma(static_cast<py::ssize_t>(r.points.size())), g(static_cast<py::ssize_t>(r.points.size()));
+  double* pg = gamma.mutable_data();
+  double* pgg = g.mutable_data();
+  for (std::size_t k = 0; k < r.points.size(); ++k) {
+    pg[k] = std::strtod(r.points[k].gamma.c_str(), nullptr);
+    pgg[k] = std::strtod(r.points[k].g.c_str(), nullptr);
+  }
+  return py::make_tuple(gamma, g);
+}
+
+// A formula's values at formula_points(law), compared cell by cell (jobs/formula_job.hpp).
+py::object compare_formula(const std::string& law, const double_array& values, const std::string& quantity,
+                           double tolerance, const std::vector<double>& region) {
+  if (quantity != "e" && quantity != "one_minus_e")
+    throw invalid_parameter("compare: quantity must be 'e' or 'one_minus_e', got '" + quantity + "'");
+  if (region.size() != 4) throw invalid_parameter("compare: region is (gamma_min, gamma_max, g_min, g_max)");
+  const formula_quantity q = quantity == "e" ? formula_quantity::e : formula_quantity::one_minus_e;
+  std::vector<double> v(values.data(), values.data() + values.size());
+  jobs::json object;
+  {
+    py::gil_scoped_release release;
+    const jobs::formula_reference r = jobs::committed_formula_reference(law_by_name(law));
+    const formula_region where{region[0], region[1], region[2], region[3]};
+    const formula_comparison c = compare_formula_values(r.points, v, q, r.grid, tolerance, where);
+    object = jobs::formula_comparison_json(c, r, q);
+    object["text"] = jobs::formula_comparison_text(c, r);
+  }
+  return to_python(object);
+}
+
 }  // namespace
 
 void bind_commands(py::module_& m) {
@@ -199,6 +238,19 @@ void bind_commands(py::module_& m) {
   m.def("physical_cor", &physical_cor, py::arg("name"), py::arg("alpha"), py::arg("beta"), py::arg("physical"),
         py::arg("digits"), py::arg("certify"), py::arg("method"), py::arg("tolerance"), py::arg("max_steps"),
         py::arg("strict"), "The cor job from physical inputs (jobs/cor_job.hpp): the object of `viscor cor --json`.");
+  m.def("formula_points", &formula_points, py::arg("law"),
+        "The (gamma, g) arrays of the certified points a formula of the law is checked at.");
+  m.def("compare_formula", &compare_formula, py::arg("law"), py::arg("values"), py::arg("quantity"),
+        py::arg("tolerance"), py::arg("region"),
+        "A formula's values at formula_points(law) against the certified e, per cell (a dict).");
+  m.def(
+      "merge_tables",
+      [](const std::vector<std::string>& inputs, const std::string& output) {
+        py::gil_scoped_release release;
+        return jobs::merge_tables(inputs, output, /*quiet=*/true);
+      },
+      py::arg("inputs"), py::arg("output"),
+      "Merges shard tables into one (jobs/table_jobs.hpp, as `viscor table merge`); returns its rows.");
   m.def("scaled_arrays", &scaled_arrays, py::arg("name"), py::arg("alpha"), py::arg("beta"), py::arg("columns"),
         "Flat float64 arrays of physical inputs -> (gamma, g) arrays by the report's scaling, in double.");
 }

@@ -24,6 +24,7 @@ from ._commands import (Points, Scene, approx, calibrate, cor_points, dem, exact
                         find_surrogate)
 from ._evaluate import EVALUATION_METHODS, Evaluation, evaluate
 from ._surrogate_export import export_surrogates
+from ._formula import FormulaCheck, PointCheck, compare, plot_formula_check
 
 try:  # written by cmake --install: the installed data directory (the build tree's module reads reference_data/)
     from ._installed import DATA_DIR as _INSTALLED_DATA_DIR
@@ -37,7 +38,7 @@ git_commit = _viscor.git_commit
 max_working_digits = _viscor.max_working_digits
 
 __all__ = ["cor", "cor_points", "Points", "exact", "approx", "calibrate", "scale", "table", "read_table", "scene", "dem", "evaluate",
-           "Evaluation", "EVALUATION_METHODS", "Surrogate", "find_surrogate", "export_surrogates", "run_cli", "Result", "Table", "Scene", "NAMED_LAWS",
+           "Evaluation", "EVALUATION_METHODS", "Surrogate", "find_surrogate", "export_surrogates", "run_cli", "Result", "Table", "Scene", "NAMED_LAWS", "compare", "FormulaCheck", "PointCheck", "plot_formula_check",
            "Error", "InvalidParameter", "PrecisionUnavailable", "ParseError", "ConvergenceError",
            "CertificationError", "data_directory"]
 

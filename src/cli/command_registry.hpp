@@ -25,6 +25,10 @@ inline std::vector<command>& commands() {
   return all;
 }
 
+/// Thrown after a check has printed its result and failed (a formula outside its
+/// tolerance): main exits 1, which tells a failed check from bad input (2).
+struct failed_check {};
+
 struct registration {
   registration(std::string name, std::string help, std::function<void(CLI::App&)> setup) {
     commands().push_back({std::move(name), std::move(help), std::move(setup)});

@@ -1,5 +1,5 @@
 // viscor command-line tool: one subcommand per src/cli/cmd_*.cpp.
-// Exit codes: 0 success, 2 usage or input error (the message names the option or
+// Exit codes: 0 success, 1 a check that ran and failed (`formula check`), 2 usage or input error (the message names the option or
 // value) or a failed write (an output file, or standard output), 3 internal error.
 #include "command_registry.hpp"
 
@@ -33,6 +33,12 @@ int main(int argc, char** argv) {
       std::cerr << "viscor: error: writing to standard output failed\n";
       return 2;
     }
+  } catch (const viscor::cli::failed_check&) {
+    if (!standard_output_written()) {
+      std::cerr << "viscor: error: writing to standard output failed\n";
+      return 2;
+    }
+    return 1;
   } catch (const CLI::ParseError& e) {
     // --help and --version are "errors" with exit code 0; every other parse error
     // is a usage error: exit 2, like every bad value found later.

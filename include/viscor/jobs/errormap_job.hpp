@@ -57,7 +57,10 @@ inline std::vector<std::string> edge_list(const std::string& text, const std::st
   return out;
 }
 
-// The rows of the law in certified CoR tables, as reference points.
+}  // namespace detail
+
+/// The rows of `law` in certified CoR tables (those with a value of e), as reference
+/// points in the tables' order: gamma, g, e and 1 - e as the tables print them.
 inline std::vector<reference_point> reference_from_tables(const contact_law& law, const std::vector<std::string>& tables) {
   std::vector<reference_point> points;
   for (const auto& path : tables) {
@@ -74,14 +77,13 @@ inline std::vector<reference_point> reference_from_tables(const contact_law& law
       if (e.empty()) continue;
       reference_point p;
       p.gamma = row.fields[col("gamma")], p.g = row.fields[col("g")], p.e = e;
+      p.one_minus_e = row.fields[col("one_minus_e")];
       p.outcome = row.fields[col("outcome")] == "stick" ? impact_outcome::stick : impact_outcome::rebound;
       points.push_back(p);
     }
   }
   return points;
 }
-
-}  // namespace detail
 
 /// Builds the map and writes it to q.output; returns what it did.
 inline errormap_summary make_error_map(const errormap_request& q) {
@@ -105,7 +107,7 @@ inline errormap_summary make_error_map(const errormap_request& q) {
   errormap_summary s;
   std::vector<reference_point> points;
   if (!q.tables.empty()) {
-    points = detail::reference_from_tables(q.law, q.tables);
+    points = reference_from_tables(q.law, q.tables);
     for (const auto& path : q.tables) s.reference += (s.reference.empty() ? "" : " ") + path;
     s.reference = "certified tables " + s.reference;
   } else {

@@ -39,10 +39,25 @@
 
 namespace viscor {
 
-/// One reference value; gamma, g and e as exact decimal text.
+/// One reference value; gamma, g, e and 1 - e as exact decimal text.
 struct reference_point {
   std::string gamma, g, e;
   impact_outcome outcome = impact_outcome::rebound;
+  std::string one_minus_e;  ///< "" where the source gives only e
+};
+
+/// A reference value in double, with its place in the list it came from.
+struct reference_sample {
+  double gamma = 0, g = 0, e = 0;
+  impact_outcome outcome = impact_outcome::rebound;
+  std::size_t index = 0;  ///< into the reference points
+};
+
+/// A cell of the grid with the reference samples that map it.
+struct mappable_cell {
+  std::size_t i = 0, j = 0;                    ///< the cell [gamma_i, gamma_i+1] x [g_j, g_j+1]
+  std::vector<const reference_sample*> samples; ///< the reference points inside it, edges included
+  cell_outcome outcome = cell_outcome::rebound; ///< mixed when the samples disagree (or one is undecided)
 };
 
 /// What build_error_map needs: the cell edges, the safety factor, floor and fewest samples per cell, and provenance.
@@ -68,6 +83,51 @@ inline std::vector<double> parse_edges(const std::vector<std::string>& edges, co
 }
 }  // namespace detail
 
+/// The reference points in double (their text checked: numbers only).
+inline std::vector<reference_sample> reference_samples(const std::vector<reference_point>& points) {
+  std::vector<reference_sample> s;
+  s.reserve(points.size());
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const reference_point& p = points[k];
+    for (const auto* t : {&p.gamma, &p.g, &p.e})
+      if (!detail::looks_like_decimal(*t)) throw invalid_parameter("error map: reference value '" + *t + "' is not a number");
+    s.push_back({std::strtod(p.gamma.c_str(), nullptr), std::strtod(p.g.c_str(), nullptr),
+                 std::strtod(p.e.c_str(), nullptr), p.outcome, k});
+  }
+  return s;
+}
+
+/// The cells of the grid (gx, gy: its edges) that the samples can map: all four
+/// corners among the samples, and at least `min_samples` of them inside (edges
+/// included). The error map and the check of an outside formula use this one rule,
+/// so both judge a cell by the same points.
+inline std::vector<mappable_cell> mappable_cells(const std::vector<reference_sample>& s, const std::vector<double>& gx,
+                                                 const std::vector<double>& gy, int min_samples) {
+  std::vector<mappable_cell> cells;
+  for (std::size_t i = 0; i + 1 < gx.size(); ++i) {
+    for (std::size_t j = 0; j + 1 < gy.size(); ++j) {
+      mappable_cell c{i, j, {}, cell_outcome::rebound};
+      std::set<std::pair<double, double>> at;
+      for (const auto& p : s)
+        if (gx[i] <= p.gamma && p.gamma <= gx[i + 1] && gy[j] <= p.g && p.g <= gy[j + 1]) {
+          c.samples.push_back(&p);
+          at.emplace(p.gamma, p.g);
+        }
+      const bool corners = at.count({gx[i], gy[j]}) && at.count({gx[i + 1], gy[j]}) && at.count({gx[i], gy[j + 1]}) &&
+                           at.count({gx[i + 1], gy[j + 1]});
+      if (!corners || static_cast<int>(c.samples.size()) < min_samples) continue;
+      bool rebound = false, stick = false, undecided = false;
+      for (const auto* p : c.samples)
+        (p->outcome == impact_outcome::stick ? stick : p->outcome == impact_outcome::rebound ? rebound : undecided) = true;
+      c.outcome = undecided || (rebound && stick) ? cell_outcome::mixed
+                  : stick                         ? cell_outcome::stick
+                                                  : cell_outcome::rebound;
+      cells.push_back(std::move(c));
+    }
+  }
+  return cells;
+}
+
 /// The error map of `law` from `points` on the grid of `spec` (see the header comment).
 inline error_map build_error_map(const contact_law& law, const std::vector<reference_point>& points,
                                  const error_map_spec& spec) {
@@ -77,19 +137,7 @@ inline error_map build_error_map(const contact_law& law, const std::vector<refer
   const std::vector<double> gx = detail::parse_edges(spec.gamma_edges, "gamma_edges");
   const std::vector<double> gy = detail::parse_edges(spec.g_edges, "g_edges");
   if (gx.front() < 0) throw invalid_parameter("error map: gamma edges must be >= 0");
-
-  struct sample {
-    double gamma, g, e;
-    impact_outcome outcome;
-  };
-  std::vector<sample> s;
-  s.reserve(points.size());
-  for (const auto& p : points) {
-    for (const auto* t : {&p.gamma, &p.g, &p.e})
-      if (!detail::looks_like_decimal(*t)) throw invalid_parameter("error map: reference value '" + *t + "' is not a number");
-    s.push_back({std::strtod(p.gamma.c_str(), nullptr), std::strtod(p.g.c_str(), nullptr),
-                 std::strtod(p.e.c_str(), nullptr), p.outcome});
-  }
+  const std::vector<reference_sample> s = reference_samples(points);
   const cor_approximations<double> approx(law);
 
   error_map map;
@@ -97,46 +145,30 @@ inline error_map build_error_map(const contact_law& law, const std::vector<refer
   map.safety_factor = spec.safety_factor;
   map.floor = spec.floor;
   map.metadata = spec.metadata;
-  for (std::size_t i = 0; i + 1 < gx.size(); ++i) {
-    for (std::size_t j = 0; j + 1 < gy.size(); ++j) {
-      std::vector<const sample*> in;
-      std::set<std::pair<double, double>> at;
-      for (const auto& p : s)
-        if (gx[i] <= p.gamma && p.gamma <= gx[i + 1] && gy[j] <= p.g && p.g <= gy[j + 1]) {
-          in.push_back(&p);
-          at.emplace(p.gamma, p.g);
-        }
-      const bool corners = at.count({gx[i], gy[j]}) && at.count({gx[i + 1], gy[j]}) && at.count({gx[i], gy[j + 1]}) &&
-                           at.count({gx[i + 1], gy[j + 1]});
-      if (!corners || static_cast<int>(in.size()) < spec.min_samples) continue;
-      error_map_cell c;
-      c.gamma_lo = spec.gamma_edges[i], c.gamma_hi = spec.gamma_edges[i + 1];
-      c.g_lo = spec.g_edges[j], c.g_hi = spec.g_edges[j + 1];
-      c.gamma_lo_v = gx[i], c.gamma_hi_v = gx[i + 1], c.g_lo_v = gy[j], c.g_hi_v = gy[j + 1];
-      c.samples = static_cast<int>(in.size());
-      bool rebound = false, stick = false, undecided = false;
-      for (const auto* p : in)
-        (p->outcome == impact_outcome::stick ? stick : p->outcome == impact_outcome::rebound ? rebound : undecided) = true;
-      c.outcome = undecided || (rebound && stick) ? cell_outcome::mixed
-                  : stick                         ? cell_outcome::stick
-                                                  : cell_outcome::rebound;
-      if (c.outcome != cell_outcome::mixed) {
-        for (std::size_t k = 0; k < all_approximations.size(); ++k) {
-          double worst = 0;
-          bool ok = true;
-          for (const auto* p : in) {
-            const std::optional<double> a = approximate_e(approx, all_approximations[k], p->gamma, p->g);
-            if (!a) {
-              ok = false;
-              break;
-            }
-            worst = std::max(worst, std::abs(*a - p->e));
+  for (const mappable_cell& m : mappable_cells(s, gx, gy, spec.min_samples)) {
+    const std::size_t i = m.i, j = m.j;
+    error_map_cell c;
+    c.gamma_lo = spec.gamma_edges[i], c.gamma_hi = spec.gamma_edges[i + 1];
+    c.g_lo = spec.g_edges[j], c.g_hi = spec.g_edges[j + 1];
+    c.gamma_lo_v = gx[i], c.gamma_hi_v = gx[i + 1], c.g_lo_v = gy[j], c.g_hi_v = gy[j + 1];
+    c.samples = static_cast<int>(m.samples.size());
+    c.outcome = m.outcome;
+    if (c.outcome != cell_outcome::mixed) {
+      for (std::size_t k = 0; k < all_approximations.size(); ++k) {
+        double worst = 0;
+        bool ok = true;
+        for (const auto* p : m.samples) {
+          const std::optional<double> a = approximate_e(approx, all_approximations[k], p->gamma, p->g);
+          if (!a) {
+            ok = false;
+            break;
           }
-          if (ok) c.bound[k] = spec.safety_factor * worst + spec.floor;
+          worst = std::max(worst, std::abs(*a - p->e));
         }
+        if (ok) c.bound[k] = spec.safety_factor * worst + spec.floor;
       }
-      map.add(std::move(c));
     }
+    map.add(std::move(c));
   }
   return map;
 }

@@ -1,0 +1,122 @@
+"""viscor on a Dask cluster (``dask.distributed``): tables, point batches and
+evaluate spread over the workers of a Client (docs/python.md, "Many machines").
+
+Every task calls the library through the Python module on its worker; the
+results are identical to a one-process run (a table byte for byte: the shards are
+merged by the library's merge). Finished work is kept: a table's shards are written
+next to the output as they arrive, so a call that fails or is interrupted can be
+repeated with the same arguments and computes only the shards that are missing;
+Dask retries a failed task (``retries``) before giving up.
+
+    from dask.distributed import Client, LocalCluster
+    import viscor.dask
+    with Client(LocalCluster(n_workers=2, threads_per_worker=1)) as client:
+        viscor.dask.table("spec.json", "table.csv", client)
+        points = viscor.dask.cor_points(list_of_dicts, client)
+        r = viscor.dask.evaluate(client, "tsuji", gamma, g, tol=1e-8)
+"""
+
+import json
+import os
+import tempfile
+
+from . import _viscor
+from ._commands import Points, cor_points as _cor_points, table as _table
+from ._evaluate import Evaluation, evaluate as _evaluate
+from ._table import Table
+
+
+def _shard_task(spec_text, index, count, sticking):
+    """On a worker: one shard of the table in a scratch directory; returns its files' text."""
+    with tempfile.TemporaryDirectory(prefix="viscor-shard-") as scratch:
+        out = os.path.join(scratch, f"shard-{index}-of-{count}.csv")
+        _table(json.loads(spec_text), out, shard=(index, count), threads=1, sticking=sticking)
+        with open(out) as f:
+            csv_text = f.read()
+        with open(out + ".json") as f:
+            sidecar_text = f.read()
+    return index, csv_text, sidecar_text
+
+
+def _spec_text(spec):
+    if isinstance(spec, dict):
+        return json.dumps(spec)
+    with open(os.fspath(spec)) as f:
+        return f.read()
+
+
+def table(spec, out, client, *, shards=None, sticking=False, retries=2):
+    """A certified table of a spec (a file or a dict, as viscor.table) computed on the
+    workers of `client`, one task per shard, merged into `out` (and `out.json`).
+
+    shards: the number of shards (default: 4 per worker). Finished shards are kept in
+    the directory `out + '.shards'` until the merge succeeds; calling again with the
+    same arguments computes only the missing ones. Returns a Table (as viscor.table).
+    """
+    from distributed import as_completed
+
+    text = _spec_text(spec)
+    json.loads(text)  # a spec that is not JSON fails here, before any task
+    if shards is None:
+        shards = 4 * max(1, len(client.scheduler_info().get("workers", {})))
+    if isinstance(shards, bool) or not isinstance(shards, int) or shards < 1:
+        raise TypeError(f"shards must be a whole number >= 1, got {shards!r}")
+    out = os.fspath(out)
+    kept = out + ".shards"
+    os.makedirs(kept, exist_ok=True)
+    paths = [os.path.join(kept, f"shard-{i}-of-{shards}.csv") for i in range(shards)]
+    missing = [i for i in range(shards) if not (os.path.exists(paths[i]) and os.path.exists(paths[i] + ".json"))]
+    futures = [client.submit(_shard_task, text, i, shards, sticking, retries=retries, pure=False) for i in missing]
+    for future in as_completed(futures):
+        index, csv_text, sidecar_text = future.result()
+        for path, body in ((paths[index] + ".json", sidecar_text), (paths[index], csv_text)):
+            with open(path + ".tmp", "w") as f:
+                f.write(body)
+            os.replace(path + ".tmp", path)  # the CSV last: a shard counts once both are there
+    _viscor.merge_tables(paths, out)
+    for path in paths:
+        for p in (path, path + ".json"):
+            os.remove(p)
+    os.rmdir(kept)
+    return Table(out)
+
+
+def _chunks(n, size):
+    return [(start, min(n, start + size)) for start in range(0, n, size)]
+
+
+def cor_points(points, client, *, chunk=64, retries=2, **options):
+    """viscor.cor_points over the workers of `client`, `chunk` points per task; the
+    options are cor_points's (digits, method, tolerance, max_steps). Returns Points
+    in input order, as one process would."""
+    if isinstance(points, (str, os.PathLike)):  # JSON lines; a CSV file: read it into dicts first
+        with open(os.fspath(points)) as f:
+            points = [json.loads(line) for line in f if line.strip()]
+    futures = [client.submit(_cor_points, points[a:b], retries=retries, pure=False, **options)
+               for a, b in _chunks(len(points), chunk)]
+    results = Points()
+    for (a, _), future in zip(_chunks(len(points), chunk), futures):
+        for r in future.result():
+            fields = r.to_dict()
+            if "line" in fields:
+                fields["line"] = fields["line"] + a  # the line in the whole batch, not in the chunk
+            results.append(type(r)(fields))
+    return results
+
+
+def evaluate(client, law=None, gamma=None, g=0.0, tol=1e-6, *, chunk=100000, retries=2, **options):
+    """viscor.evaluate over the workers of `client`, `chunk` points per task (each task
+    uses one thread); arrays broadcast as in evaluate. Returns an Evaluation."""
+    import numpy as np
+
+    gamma_b, g_b, tol_b = np.broadcast_arrays(np.asarray(gamma, dtype=np.float64), np.asarray(g, dtype=np.float64),
+                                              np.asarray(tol, dtype=np.float64))
+    shape = gamma_b.shape
+    flat = [np.ascontiguousarray(x).reshape(-1) for x in (gamma_b, g_b, tol_b)]
+    options.setdefault("threads", 1)
+    futures = [client.submit(_evaluate, law, flat[0][a:b], flat[1][a:b], flat[2][a:b], retries=retries, pure=False,
+                             **options) for a, b in _chunks(flat[0].size, chunk)]
+    parts = [f.result() for f in futures]
+    if not parts:
+        return _evaluate(law, gamma_b, g_b, tol_b, **options)
+    return Evaluation(*(np.concatenate([getattr(p, k) for p in parts]).reshape(shape) for k in Evaluation._fields))

@@ -1,0 +1,99 @@
+// viscor formula points|check (src/cli/cmd_formula.cpp): the points, a values file
+// of the report's Prop. 2 computed here, the verdict and its exit codes, and bad
+// input. The statistics are the library's (testing_cor_formula_test.cpp checks
+// them against the committed error map); here the front end must give the same.
+#include <viscor/testing/cor_formula.hpp>
+
+#include <viscor/approx/approximations.hpp>
+
+#include "test_utils.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace {
+
+using viscor::test::run_cli;
+
+bool cli_built() { return std::string(VISCOR_CLI_PATH).size() > 0; }
+
+double prop2_numeric(double gamma, double g) {
+  static const viscor::cor_approximations<double> approx(viscor::law_by_name("kuwabara_kono"));
+  return approx.prop2(gamma, g, viscor::coefficient_source::numeric).e;
+}
+
+// Writes gamma,g,e of `formula` at the points `viscor formula points` lists.
+std::string values_file(const std::string& name, double (*formula)(double, double)) {
+  const auto points = run_cli("formula points --model kuwabara_kono");
+  EXPECT_EQ(points.status, 0) << points.err;
+  std::istringstream in(points.out);
+  const std::string path = ::testing::TempDir() + name;
+  std::ofstream out(path);
+  out << "gamma,g,e\n";
+  std::size_t n = 0;
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#' || line == "gamma,g") continue;
+    const auto comma = line.find(',');
+    const double gamma = std::stod(line.substr(0, comma)), g = std::stod(line.substr(comma + 1));
+    out << line << ',' << viscor::to_decimal_string(formula(gamma, g), 17) << '\n';
+    ++n;
+  }
+  EXPECT_GT(n, 1000u);
+  return path;
+}
+
+double wrong_in_one_cell(double gamma, double g) {
+  return prop2_numeric(gamma, g) + (1e-4 <= gamma && gamma <= 2e-4 && 0.01 <= g && g <= 0.1 ? 1e-3 : 0);
+}
+
+TEST(CliFormula, CheckGivesTheLibrarysStatisticsAndExitCodes) {
+  if (!cli_built()) GTEST_SKIP() << "viscor CLI not built";
+  const std::string good = values_file("prop2_numeric.csv", prop2_numeric);
+  const auto r = run_cli("formula check --model kuwabara_kono --values " + good + " --tolerance 1e-6 --gamma-max 1e-3 --json");
+  ASSERT_EQ(r.status, 0) << r.err << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["pass"], true);
+  const viscor::formula_comparison lib =
+      viscor::testing::check_cor_formula(prop2_numeric, "kuwabara_kono", 1e-6, viscor::formula_region{0, 1e-3});
+  ASSERT_EQ(j["cells"].size(), lib.cells.size());
+  for (std::size_t k = 0; k < lib.cells.size(); ++k)  // the file holds 17 digits: the errors agree to rounding
+    EXPECT_NEAR(std::stod(j["cells"][k]["max_abs_e"].get<std::string>()), lib.cells[k].max_abs_e, 1e-16);
+
+  const std::string bad = values_file("wrong.csv", wrong_in_one_cell);
+  const auto f = run_cli("formula check --model kuwabara_kono --values " + bad + " --tolerance 1e-6 --gamma-max 1e-3");
+  EXPECT_EQ(f.status, 1) << f.err;
+  EXPECT_NE(f.out.find("verdict    FAIL"), std::string::npos) << f.out;
+  EXPECT_NE(f.out.find("fails      gamma 1e-4..2e-4, g 0.01..0.1"), std::string::npos) << f.out;
+}
+
+TEST(CliFormula, BadValuesFilesAreRefusedNamingTheProblem) {
+  if (!cli_built()) GTEST_SKIP() << "viscor CLI not built";
+  const std::string dir = ::testing::TempDir();
+  auto write = [&](const std::string& name, const std::string& text) {
+    std::ofstream(dir + name) << text;
+    return dir + name;
+  };
+  const auto unknown = run_cli("formula check --model kuwabara_kono --tolerance 1e-3 --values " +
+                               write("unknown.csv", "gamma,g,e\n0.123456,0.5,0.9\n"));
+  EXPECT_EQ(unknown.status, 2);
+  EXPECT_NE(unknown.err.find("gamma = 0.123456"), std::string::npos) << unknown.err;
+  const auto no_value = run_cli("formula check --model kuwabara_kono --tolerance 1e-3 --values " +
+                                write("no_value.csv", "gamma,g\n0.1,0.5\n"));
+  EXPECT_EQ(no_value.status, 2);
+  EXPECT_NE(no_value.err.find("e (or one_minus_e)"), std::string::npos) << no_value.err;
+  const auto twice = run_cli("formula check --model kuwabara_kono --tolerance 1e-3 --values " +
+                             write("twice.csv", "gamma,g,e,e\n0.1,0.5,0.9,0.9\n"));
+  EXPECT_EQ(twice.status, 2);
+  EXPECT_NE(twice.err.find("given twice"), std::string::npos) << twice.err;
+  const auto text = run_cli("formula check --model kuwabara_kono --tolerance 1e-3 --values " +
+                            write("text.csv", "gamma,g,e\n0.1,0.5,abc\n"));
+  EXPECT_EQ(text.status, 2);
+  EXPECT_NE(text.err.find("abc"), std::string::npos) << text.err;
+  const auto linear_law = run_cli("formula points --alpha 1 --beta 1");
+  EXPECT_EQ(linear_law.status, 2);
+}
+
+}  // namespace

@@ -1,0 +1,148 @@
+// Checks of an outside CoR formula (scenes/formula_check.hpp, jobs/formula_job.hpp)
+// and the GoogleTest assertions built on them (viscor/testing/cor_formula.hpp).
+// Truth: statistics worked out by hand on a small grid; the committed error map of
+// Kuwabara-Kono (built by `viscor errormap` from the certified tables, its provenance
+// in its header) for the report's Prop. 2 written as an outside formula.
+#include <viscor/testing/cor_formula.hpp>
+
+#include <viscor/approx/approximations.hpp>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest-spi.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <tuple>
+
+namespace {
+
+using viscor::formula_quantity;
+using viscor::formula_region;
+using viscor::reference_point;
+
+// Five points of the cell [0, 1] x [0, 1]: its corners and its centre.
+std::vector<reference_point> small_grid() {
+  return {{"0", "0", "0.5", viscor::impact_outcome::rebound, "0.5"},
+          {"1", "0", "0.4", viscor::impact_outcome::rebound, "0.6"},
+          {"0", "1", "0.3", viscor::impact_outcome::rebound, "0.7"},
+          {"1", "1", "0.2", viscor::impact_outcome::rebound, "0.8"},
+          {"0.5", "0.5", "0.35", viscor::impact_outcome::rebound, "0.65"}};
+}
+
+viscor::error_map_spec unit_cell() {
+  viscor::error_map_spec spec;
+  spec.gamma_edges = {"0", "1"};
+  spec.g_edges = {"0", "1"};
+  spec.min_samples = 4;
+  return spec;
+}
+
+TEST(FormulaCheck, StatisticsOfOneCellWorkedOutByHand) {
+  // errors 0.01, -0.02, 0, 0.03, 0.005: max 0.03 (the fourth point), median 0.01;
+  // relative on 1 - e: 0.02, 0.0333.., 0, 0.0375, 0.00769..: max 0.0375, median 0.02.
+  const std::vector<double> values{0.51, 0.38, 0.3, 0.23, 0.355};
+  const viscor::formula_comparison c =
+      viscor::compare_formula_values(small_grid(), values, formula_quantity::e, unit_cell(), 0.025);
+  ASSERT_EQ(c.cells.size(), 1u);
+  const viscor::formula_cell& cell = c.cells[0];
+  EXPECT_EQ(cell.samples, 5u);
+  EXPECT_NEAR(cell.max_abs_e, 0.03, 1e-15);
+  EXPECT_NEAR(cell.median_abs_e, 0.01, 1e-15);
+  EXPECT_NEAR(cell.max_rel_one_minus_e, 0.0375, 1e-15);
+  EXPECT_NEAR(cell.median_rel_one_minus_e, 0.02, 1e-15);
+  EXPECT_EQ(cell.worst.index, 3u);
+  EXPECT_FALSE(cell.pass);
+  EXPECT_FALSE(c.pass);
+  EXPECT_EQ(c.failed_cells, 1u);
+  EXPECT_TRUE(viscor::compare_formula_values(small_grid(), values, formula_quantity::e, unit_cell(), 0.03).pass);
+  // The same values given as 1 - e.
+  std::vector<double> one_minus(values.size());
+  for (std::size_t k = 0; k < values.size(); ++k) one_minus[k] = 1 - values[k];
+  EXPECT_NEAR(viscor::compare_formula_values(small_grid(), one_minus, formula_quantity::one_minus_e, unit_cell(), 1)
+                  .cells[0]
+                  .max_abs_e,
+              0.03, 1e-15);
+  // A region that leaves the cell out checks nothing.
+  EXPECT_TRUE(viscor::compare_formula_values(small_grid(), values, formula_quantity::e, unit_cell(), 0,
+                                             formula_region{2, 3, 0, 1})
+                  .cells.empty());
+}
+
+TEST(FormulaCheck, OutcomeMismatchesAndNonFiniteValuesFail) {
+  std::vector<reference_point> points = small_grid();
+  points[3].e = "0", points[3].one_minus_e = "1", points[3].outcome = viscor::impact_outcome::stick;
+  const std::vector<double> rebounds_everywhere{0.5, 0.4, 0.3, 0.01, 0.35};
+  const auto c = viscor::compare_formula_values(points, rebounds_everywhere, formula_quantity::e, unit_cell(), 1);
+  EXPECT_EQ(c.cells[0].outcome, viscor::cell_outcome::mixed);
+  EXPECT_EQ(c.cells[0].rebound_where_truth_sticks, 1u);
+  EXPECT_FALSE(c.pass);
+  const std::vector<double> sticks_at_a_rebound{0.5, 0.4, 0.3, 0.2, 0};
+  EXPECT_EQ(viscor::compare_formula_values(small_grid(), sticks_at_a_rebound, formula_quantity::e, unit_cell(), 1)
+                .cells[0]
+                .stick_where_truth_rebounds,
+            1u);
+  const std::vector<double> nan_somewhere{0.5, 0.4, std::nan(""), 0.2, 0.35};
+  const auto n = viscor::compare_formula_values(small_grid(), nan_somewhere, formula_quantity::e, unit_cell(), 1);
+  EXPECT_EQ(n.cells[0].non_finite, 1u);
+  EXPECT_FALSE(n.pass);
+  EXPECT_THROW(viscor::compare_formula_values(small_grid(), {0.5}, formula_quantity::e, unit_cell(), 1),
+               viscor::invalid_parameter);
+}
+
+// The report's Prop. 2 with numeric coefficients, written as an outside formula.
+double prop2_numeric(double gamma, double g) {
+  static const viscor::cor_approximations<double> approx(viscor::law_by_name("kuwabara_kono"));
+  return approx.prop2(gamma, g, viscor::coefficient_source::numeric).e;
+}
+
+TEST(FormulaCheck, ABuiltInFormulaGivesTheCommittedErrorMap) {
+  // The committed map holds, per cell, 4 x the worst sampled |de| + 1e-14, printed
+  // rounded up to three digits: the outside formula's worst error must give it.
+  const std::string dir = viscor::jobs::data_directory();
+  const viscor::error_map map = viscor::read_error_map(dir + "/error_maps/kuwabara_kono.csv");
+  std::map<std::tuple<std::string, std::string, std::string, std::string>, const viscor::error_map_cell*> by_edges;
+  for (const auto& cell : map.cells()) by_edges[{cell.gamma_lo, cell.gamma_hi, cell.g_lo, cell.g_hi}] = &cell;
+  const viscor::formula_comparison c = viscor::testing::check_cor_formula(prop2_numeric, "kuwabara_kono", 1);
+  ASSERT_EQ(c.cells.size(), map.cells().size());
+  std::size_t compared = 0;
+  for (const auto& cell : c.cells) {
+    const auto it = by_edges.find({cell.gamma_lo, cell.gamma_hi, cell.g_lo, cell.g_hi});
+    ASSERT_NE(it, by_edges.end()) << cell.gamma_lo << " " << cell.g_lo;
+    const viscor::error_map_cell& m = *it->second;
+    EXPECT_EQ(static_cast<int>(cell.samples), m.samples);
+    EXPECT_EQ(cell.outcome, m.outcome);
+    const auto& printed = m.bound[static_cast<std::size_t>(viscor::approximation::prop2_numeric)];
+    if (!printed) continue;
+    const double bound = map.safety_factor * cell.max_abs_e + map.floor;
+    EXPECT_LE(bound, *printed) << cell.gamma_lo << ".." << cell.gamma_hi << ", " << cell.g_lo << ".." << cell.g_hi;
+    EXPECT_LE(*printed, bound * 1.0101) << cell.gamma_lo << ".." << cell.gamma_hi << ", " << cell.g_lo;
+    ++compared;
+  }
+  EXPECT_GT(compared, 50u);
+}
+
+// Prop. 2 made wrong by 1e-3 in one cell of the small-gamma region.
+double wrong_in_one_cell(double gamma, double g) {
+  const bool inside = 1e-4 <= gamma && gamma <= 2e-4 && 0.01 <= g && g <= 0.1;
+  return prop2_numeric(gamma, g) + (inside ? 1e-3 : 0);
+}
+
+const formula_region small_gamma{0, 1e-3, 0, 10};
+
+TEST(CorFormulaAssertions, PassWithinToleranceAndFailNamingTheWorstPoint) {
+  EXPECT_COR_WITHIN_REGION(prop2_numeric, "kuwabara_kono", small_gamma, 1e-6);
+  const ::testing::AssertionResult bad = viscor::testing::cor_formula_within_region(
+      "wrong_in_one_cell", "kuwabara_kono", "small_gamma", "1e-6", wrong_in_one_cell, "kuwabara_kono", small_gamma,
+      1e-6);
+  ASSERT_FALSE(bad);
+  EXPECT_THAT(bad.message(), ::testing::HasSubstr("wrong_in_one_cell is not within 1e-6"));
+  EXPECT_THAT(bad.message(), ::testing::HasSubstr("worst      gamma = "));
+  EXPECT_THAT(bad.message(), ::testing::HasSubstr("fails      gamma 1e-4..2e-4, g 0.01..0.1: max |de| "));
+  EXPECT_NONFATAL_FAILURE(EXPECT_COR_WITHIN_REGION(wrong_in_one_cell, "kuwabara_kono", small_gamma, 1e-6),
+                          "fails      gamma 1e-4..2e-4");
+}
+
+}  // namespace
