@@ -11,7 +11,10 @@
 #include <gtest/gtest-spi.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <map>
 #include <string>
@@ -92,10 +95,19 @@ TEST(FormulaCheck, OutcomeMismatchesAndNonFiniteValuesFail) {
                viscor::invalid_parameter);
 }
 
-// The report's Prop. 2 with numeric coefficients, written as an outside formula.
+// The report's Prop. 2 with numeric coefficients, written as an outside formula as
+// the error map evaluates it (clamped to [0, 1]).
 double prop2_numeric(double gamma, double g) {
   static const viscor::cor_approximations<double> approx(viscor::law_by_name("kuwabara_kono"));
-  return approx.prop2(gamma, g, viscor::coefficient_source::numeric).e;
+  return std::clamp(approx.prop2(gamma, g, viscor::coefficient_source::numeric).e, 0.0, 1.0);
+}
+
+// A bound as the map file prints it: three digits, rounded up (error_map_text).
+double printed_bound(double b) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2e", b);
+  if (std::strtod(text, nullptr) < b) std::snprintf(text, sizeof text, "%.2e", std::nextafter(b * (1 + 1e-2), 1e308));
+  return std::strtod(text, nullptr);
 }
 
 TEST(FormulaCheck, ABuiltInFormulaGivesTheCommittedErrorMap) {
@@ -116,9 +128,8 @@ TEST(FormulaCheck, ABuiltInFormulaGivesTheCommittedErrorMap) {
     EXPECT_EQ(cell.outcome, m.outcome);
     const auto& printed = m.bound[static_cast<std::size_t>(viscor::approximation::prop2_numeric)];
     if (!printed) continue;
-    const double bound = map.safety_factor * cell.max_abs_e + map.floor;
-    EXPECT_LE(bound, *printed) << cell.gamma_lo << ".." << cell.gamma_hi << ", " << cell.g_lo << ".." << cell.g_hi;
-    EXPECT_LE(*printed, bound * 1.0101) << cell.gamma_lo << ".." << cell.gamma_hi << ", " << cell.g_lo;
+    EXPECT_EQ(printed_bound(map.safety_factor * cell.max_abs_e + map.floor), *printed)
+        << cell.gamma_lo << ".." << cell.gamma_hi << ", " << cell.g_lo << ".." << cell.g_hi;
     ++compared;
   }
   EXPECT_GT(compared, 50u);
@@ -133,15 +144,15 @@ double wrong_in_one_cell(double gamma, double g) {
 const formula_region small_gamma{0, 1e-3, 0, 10};
 
 TEST(CorFormulaAssertions, PassWithinToleranceAndFailNamingTheWorstPoint) {
-  EXPECT_COR_WITHIN_REGION(prop2_numeric, "kuwabara_kono", small_gamma, 1e-6);
+  EXPECT_COR_WITHIN_REGION(prop2_numeric, "kuwabara_kono", small_gamma, 1e-5);  // its worst there: 2.8e-6
   const ::testing::AssertionResult bad = viscor::testing::cor_formula_within_region(
-      "wrong_in_one_cell", "kuwabara_kono", "small_gamma", "1e-6", wrong_in_one_cell, "kuwabara_kono", small_gamma,
-      1e-6);
+      "wrong_in_one_cell", "kuwabara_kono", "small_gamma", "1e-5", wrong_in_one_cell, "kuwabara_kono", small_gamma,
+      1e-5);
   ASSERT_FALSE(bad);
-  EXPECT_THAT(bad.message(), ::testing::HasSubstr("wrong_in_one_cell is not within 1e-6"));
+  EXPECT_THAT(bad.message(), ::testing::HasSubstr("wrong_in_one_cell is not within 1e-5"));
   EXPECT_THAT(bad.message(), ::testing::HasSubstr("worst      gamma = "));
   EXPECT_THAT(bad.message(), ::testing::HasSubstr("fails      gamma 1e-4..2e-4, g 0.01..0.1: max |de| "));
-  EXPECT_NONFATAL_FAILURE(EXPECT_COR_WITHIN_REGION(wrong_in_one_cell, "kuwabara_kono", small_gamma, 1e-6),
+  EXPECT_NONFATAL_FAILURE(EXPECT_COR_WITHIN_REGION(wrong_in_one_cell, "kuwabara_kono", small_gamma, 1e-5),
                           "fails      gamma 1e-4..2e-4");
 }
 

@@ -30,6 +30,8 @@ class Result:
         return value
 
     def __getattr__(self, name):
+        if name.startswith("__") or name == "_fields":  # copy and pickle probe these before _fields is set
+            raise AttributeError(name)
         try:
             value = self._fields[name]
         except KeyError:

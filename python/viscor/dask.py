@@ -23,6 +23,7 @@ import tempfile
 from . import _viscor
 from ._commands import Points, cor_points as _cor_points, table as _table
 from ._evaluate import Evaluation, evaluate as _evaluate
+from ._result import Result
 from ._table import Table
 
 
@@ -81,6 +82,11 @@ def table(spec, out, client, *, shards=None, sticking=False, retries=2):
     return Table(out)
 
 
+def _points_task(points, options):
+    """On a worker: one chunk of a point batch, as plain dicts (they travel back pickled)."""
+    return [r.to_dict() for r in _cor_points(points, **options)]
+
+
 def _chunks(n, size):
     return [(start, min(n, start + size)) for start in range(0, n, size)]
 
@@ -92,15 +98,14 @@ def cor_points(points, client, *, chunk=64, retries=2, **options):
     if isinstance(points, (str, os.PathLike)):  # JSON lines; a CSV file: read it into dicts first
         with open(os.fspath(points)) as f:
             points = [json.loads(line) for line in f if line.strip()]
-    futures = [client.submit(_cor_points, points[a:b], retries=retries, pure=False, **options)
+    futures = [client.submit(_points_task, points[a:b], options, retries=retries, pure=False)
                for a, b in _chunks(len(points), chunk)]
     results = Points()
     for (a, _), future in zip(_chunks(len(points), chunk), futures):
-        for r in future.result():
-            fields = r.to_dict()
+        for fields in future.result():
             if "line" in fields:
                 fields["line"] = fields["line"] + a  # the line in the whole batch, not in the chunk
-            results.append(type(r)(fields))
+            results.append(Result(fields))
     return results
 
 

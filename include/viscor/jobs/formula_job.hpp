@@ -167,9 +167,9 @@ inline std::vector<double> values_at_reference(formula_reference& r, const formu
   }
   for (const auto& [key, value] : given.at)
     if (!known.count(key))
-      throw invalid_parameter("formula check: gamma = " + to_decimal_string(key.first, 17) + ", g = " +
-                              to_decimal_string(key.second, 17) + " is not a point of the certified tables of " +
-                              r.law.name + " (`viscor errormap points --model " + r.law.name + "` lists them)");
+      throw invalid_parameter("formula check: gamma = " + viscor::detail::shortest(key.first) + ", g = " +
+                              viscor::detail::shortest(key.second) + " is not a point of the certified tables of " +
+                              r.law.name + " (`viscor formula points --model " + r.law.name + "` lists them)");
   r.points = std::move(kept);
   return values;
 }
