@@ -265,7 +265,7 @@ inline std::vector<surrogate::reference_value> read_verification_table(const std
     v.gamma = std::strtod(r.fields[4].c_str(), nullptr), v.g = std::strtod(r.fields[5].c_str(), nullptr);
     v.outcome = r.fields[6] == "stick" ? impact_outcome::stick : impact_outcome::rebound;
     v.e = std::strtold(r.fields[7].c_str(), nullptr), v.one_minus_e = std::strtold(r.fields[8].c_str(), nullptr);
-    v.digits = std::stoi(r.fields[11]);
+    v.certified_digits = std::stoi(r.fields[11]);
     refs.push_back(v);
   }
   return refs;
