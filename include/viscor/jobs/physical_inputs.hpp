@@ -62,6 +62,7 @@ struct physical_inputs {
   std::optional<std::string> deprecated_force;  ///< --F, the spelling before 0.2.0
   bool strict = false;  ///< refuse, not only warn about, inputs outside their plausible range
 
+  /// Whether any material input was given (the bead's mass and stiffness are then computed from it).
   bool has_material() const { return youngs_modulus || poisson_ratio || radius || density; }
   /// Whether any physical input was given (the command is then in physical mode).
   bool given() const { return m || k || v0 || gamma0 || gravity || force || deprecated_force || has_material(); }
