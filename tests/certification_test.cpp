@@ -25,7 +25,7 @@ certify_options integrators_only() {
 // points it certified when written, so that certifying nothing cannot pass.
 template <class Real>
 int certified_with_digits(const certified_result<Real>& c) {
-  return c.outcome_certified && c.digits > 0;
+  return c.outcome_certified && c.certified_digits > 0;
 }
 
 TEST(certification, honest_on_every_exact_case_in_double) {
@@ -111,7 +111,7 @@ TEST(certification, uncapped_digits_are_the_agreement_minus_the_margin) {
       agreement = std::min(agreement, test::true_digits(detail::widen<mpfr_real>(a), b));
   ASSERT_LT(agreement, 50) << "the case must be uncapped";
   EXPECT_EQ(c.safety_margin, 2);
-  EXPECT_EQ(c.digits, agreement - 2);
+  EXPECT_EQ(c.certified_digits, agreement - 2);
 }
 #endif
 
@@ -122,8 +122,8 @@ TEST(certification, at_least_45_digits_at_50_for_named_laws) {
     for (auto [gamma, g] : {std::pair{"0.05", "1"}, std::pair{"1e-3", "0.05"}}) {
       const auto c = certify<mpfr_50>(law_by_name(n.name), mpfr_50(gamma), mpfr_50(g));
       EXPECT_TRUE(c.outcome_certified) << n.name << " gamma = " << gamma << " g = " << g;
-      EXPECT_GE(c.digits, 45) << n.name << " gamma = " << gamma << " g = " << g;
-      EXPECT_LE(c.digits, 50);
+      EXPECT_GE(c.certified_digits, 45) << n.name << " gamma = " << gamma << " g = " << g;
+      EXPECT_LE(c.certified_digits, 50);
       if (std::string(n.name) == "linear") {  // certified by its closed form at two precisions
         ASSERT_EQ(c.computations.size(), 2u);
         EXPECT_EQ(c.computations[0].source, certified_source::closed_form);
@@ -145,11 +145,11 @@ TEST(certification, a_perturbed_method_makes_certification_drop) {
   const contact_law kk = law_by_name("kuwabara_kono");
   const auto clean = certify<double>(kk, 0.05, 1.0);
   ASSERT_TRUE(clean.outcome_certified);
-  ASSERT_GE(clean.digits, 12);
+  ASSERT_GE(clean.certified_digits, 12);
   for (auto which : {certified_source::taylor, certified_source::taylor_reference, certified_source::adaptive}) {
     const auto c = detail::certify_perturbed<double>(kk, 0.05, 1.0, {}, {which, "1e-8"});
-    EXPECT_LE(c.digits, 8) << to_string(which);
-    EXPECT_LT(c.digits, clean.digits - 3) << to_string(which);
+    EXPECT_LE(c.certified_digits, 8) << to_string(which);
+    EXPECT_LT(c.certified_digits, clean.certified_digits - 3) << to_string(which);
   }
 }
 
@@ -158,8 +158,8 @@ TEST(certification, a_perturbed_method_makes_certification_drop_at_50_digits) {
   const auto c = detail::certify_perturbed<mpfr_50>(law_by_name("tsuji"), mpfr_50("0.05"), mpfr_50(1), {},
                                                     {certified_source::adaptive, "1e-30"});
   EXPECT_TRUE(c.outcome_certified);
-  EXPECT_LE(c.digits, 30);
-  EXPECT_GE(c.digits, 20);  // the other two still agree: the drop is the perturbation's size
+  EXPECT_LE(c.certified_digits, 30);
+  EXPECT_GE(c.certified_digits, 20);  // the other two still agree: the drop is the perturbation's size
 }
 #endif
 
@@ -168,7 +168,7 @@ TEST(certification, outcome_disagreement_is_uncertified_not_averaged) {
   const auto c = detail::certify_perturbed<double>(law_by_name("linear"), 0.1, 1.0, integrators_only(),
                                                    {certified_source::adaptive, "10"});
   EXPECT_FALSE(c.outcome_certified);
-  EXPECT_EQ(c.digits, 0);
+  EXPECT_EQ(c.certified_digits, 0);
   EXPECT_EQ(c.absolute_digits_e, 0);
   EXPECT_TRUE(c.near_sticking);
   EXPECT_EQ(c.computations[2].outcome, impact_outcome::stick);
@@ -197,7 +197,7 @@ TEST(certification, an_undecided_outcome_is_uncertified) {
   EXPECT_EQ(c.computations[3].source, certified_source::adaptive_reference);
   EXPECT_EQ(c.computations[3].outcome, impact_outcome::undecided);
   EXPECT_FALSE(c.outcome_certified);
-  EXPECT_EQ(c.digits, 0);
+  EXPECT_EQ(c.certified_digits, 0);
   EXPECT_EQ(c.absolute_digits_e, 0);
   EXPECT_EQ(c.computations[2].digits_contact_time, 0);
 }
@@ -216,10 +216,10 @@ TEST(certification, an_adaptive_run_undecided_in_double_is_repeated_at_the_refer
   EXPECT_EQ(c.computations[3].precision_digits, c.computations[1].precision_digits);
   EXPECT_TRUE(c.outcome_certified);
   EXPECT_EQ(c.outcome, impact_outcome::rebound);
-  EXPECT_GE(c.digits, 10);
+  EXPECT_GE(c.certified_digits, 10);
   // The repeated run is the independent check: perturbed, the digits drop with it.
   const auto wrong = detail::certify_perturbed<double>(p.law, 1e10, 0.0, {}, {certified_source::adaptive_reference, "1e-6"});
-  EXPECT_LE(wrong.digits, 7);
+  EXPECT_LE(wrong.certified_digits, 7);
 }
 
 TEST(certification, the_linear_law_is_certified_by_its_closed_form_at_any_gamma_and_g) {
@@ -243,8 +243,8 @@ TEST(certification, a_perturbed_closed_form_makes_certification_drop) {
   const auto clean = certify<double>(linear, 1e4, -1.0);
   for (auto which : {certified_source::closed_form, certified_source::closed_form_reference}) {
     const auto c = detail::certify_perturbed<double>(linear, 1e4, -1.0, {}, {which, "1e-8"});
-    EXPECT_LE(c.digits, 8) << to_string(which);
-    EXPECT_LT(c.digits, clean.digits) << to_string(which);
+    EXPECT_LE(c.certified_digits, 8) << to_string(which);
+    EXPECT_LT(c.certified_digits, clean.certified_digits) << to_string(which);
   }
 }
 
@@ -254,7 +254,7 @@ TEST(certification, sticking_outcome_is_certified_with_exact_e) {
   EXPECT_EQ(c.outcome, impact_outcome::stick);
   EXPECT_EQ(c.e, 0);
   EXPECT_EQ(c.one_minus_e, 1);
-  EXPECT_GE(c.digits, 10);  // the contact time (turning back) and u_max agree
+  EXPECT_GE(c.certified_digits, 10);  // the contact time (turning back) and u_max agree
 }
 
 #if VISCOR_HAS_MPFR
@@ -311,8 +311,8 @@ TEST(certification, run_time_precision_and_explicit_reference_precision) {
   const auto c = certify<mpfr_real>(law_by_name("hunt_crossley"), mpfr_real("1e-3"), mpfr_real(0), options);
   EXPECT_EQ(c.working_digits, 30);
   EXPECT_EQ(c.computations[1].precision_digits, 70);
-  EXPECT_GE(c.digits, 26);
-  EXPECT_LE(c.digits, 30);
+  EXPECT_GE(c.certified_digits, 26);
+  EXPECT_LE(c.certified_digits, 30);
   EXPECT_LE(c.e.precision(), 31u) << "results are rounded to the caller's precision";
 }
 #endif

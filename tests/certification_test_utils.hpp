@@ -126,7 +126,7 @@ certified_result<Real> check_honesty(const sample_point& p, const certify_option
   }
   SCOPED_TRACE("truth: " + source);
   if (!c.outcome_certified) {
-    EXPECT_EQ(c.digits, 0) << "an uncertified outcome carries no digits";
+    EXPECT_EQ(c.certified_digits, 0) << "an uncertified outcome carries no digits";
     return c;
   }
   if (c.outcome != truth_outcome) {
@@ -146,8 +146,8 @@ certified_result<Real> check_honesty(const sample_point& p, const certify_option
   using boost::math::isnan;
   if (time_known && !isnan(truth_time)) compare("T_f", c.contact_time, truth_time);  // NaN: the truth does not know
   if (u_max_known) compare("u_max", c.max_compression, truth_u_max);
-  EXPECT_LE(c.digits, agree) << "over-claim: certified " << c.digits << " digits, " << agree << " are right; " << worst;
-  EXPECT_LE(c.digits, decimal_digits<Real>());
+  EXPECT_LE(c.certified_digits, agree) << "over-claim: certified " << c.certified_digits << " digits, " << agree << " are right; " << worst;
+  EXPECT_LE(c.certified_digits, decimal_digits<Real>());
   return c;
 }
 

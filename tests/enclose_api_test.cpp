@@ -41,10 +41,10 @@ std::string rounded(const mpfr_real& x, int d) {
 void expect_proven(const proven_bounds& b, const mpfr_real& exact, int least, const std::string& what) {
   EXPECT_TRUE(within(b, exact)) << what << ": exact " << to_decimal_string(exact, 60) << " outside [" << b.lower
                                 << ", " << b.upper << "]";
-  EXPECT_GE(b.digits, least) << what;
-  if (b.digits > 0)
-    EXPECT_EQ(rounded(exact, b.digits), rounded(mpfr_real(b.lower), b.digits))
-        << what << ": " << b.digits << " digits are not the correctly rounded ones";
+  EXPECT_GE(b.proven_digits, least) << what;
+  if (b.proven_digits > 0)
+    EXPECT_EQ(rounded(exact, b.proven_digits), rounded(mpfr_real(b.lower), b.proven_digits))
+        << what << ": " << b.proven_digits << " digits are not the correctly rounded ones";
 }
 
 struct closed_case {
@@ -99,7 +99,7 @@ TEST(EncloseApi, StickIsExactAndNonRationalIsNotProvable) {
   EXPECT_EQ(stick.e.lower, "0");
   EXPECT_EQ(stick.e.upper, "0");
   EXPECT_EQ(stick.one_minus_e.lower, "1");
-  EXPECT_EQ(stick.e.digits, 20);
+  EXPECT_EQ(stick.e.proven_digits, 20);
   const contact_law irrational{exponent::parse("1.4142135623730950488016887242097", "alpha"), exponent::parse("1", "beta")};
   try {
     (void)enclose(irrational, "0.1", "0", 30);

@@ -93,12 +93,12 @@ TEST(Float128Grid, NoQuantityClaimedToMoreDigitsThanItHas) {
         ASSERT_EQ(c.outcome, t.outcome);
         const int c_t = digits_right(ref_t(c.contact_time), t.contact_time);
         const int c_u = digits_right(ref_t(c.max_compression), t.max_compression);
-        EXPECT_LE(c.digits, c_t) << "T_f certified to " << c.digits << " digits, right to " << c_t;
-        EXPECT_LE(c.digits, c_u) << "u_max certified to " << c.digits << " digits, right to " << c_u;
+        EXPECT_LE(c.certified_digits, c_t) << "T_f certified to " << c.certified_digits << " digits, right to " << c_t;
+        EXPECT_LE(c.certified_digits, c_u) << "u_max certified to " << c.certified_digits << " digits, right to " << c_u;
         if (c.outcome == impact_outcome::rebound) {
           const int c_e = digits_right(ref_t(c.e), t.e), c_ome = digits_right(ref_t(c.one_minus_e), t.one_minus_e);
-          EXPECT_LE(c.digits, c_e) << "e certified to " << c.digits << " digits, right to " << c_e;
-          EXPECT_LE(c.digits, c_ome) << "1 - e certified to " << c.digits << " digits, right to " << c_ome;
+          EXPECT_LE(c.certified_digits, c_e) << "e certified to " << c.certified_digits << " digits, right to " << c_e;
+          EXPECT_LE(c.certified_digits, c_ome) << "1 - e certified to " << c.certified_digits << " digits, right to " << c_ome;
         }
       }
     }

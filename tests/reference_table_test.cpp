@@ -212,7 +212,7 @@ TEST(TableRow, LinearRowsFromTheClosedForm) {
   EXPECT_EQ(r.index, 7);
   EXPECT_EQ(r.outcome, viscor::impact_outcome::rebound);
   EXPECT_EQ(r.source, viscor::row_source::exact);
-  EXPECT_EQ(r.digits, 28);
+  EXPECT_EQ(r.certified_digits, 28);
   EXPECT_EQ(r.alpha, "1");
   EXPECT_EQ(r.gamma, "0.3");
   const mpfr_50 xi = mpfr_50(3) / 20, omega = sqrt(1 - xi * xi), pi = boost::math::constants::pi<mpfr_50>();
@@ -284,7 +284,7 @@ TEST(StickingThreshold, LinearLawMatchesTheClosedFormCondition) {
     const viscor::threshold_point p{3, viscor::law_by_name("linear"), viscor::threshold_variable::g, gamma};
     const viscor::threshold_row row = viscor::compute_threshold_row(p, 25, settings);
     EXPECT_EQ(row.gamma, gamma);
-    EXPECT_EQ(row.digits, 25);
+    EXPECT_EQ(row.certified_digits, 25);
     const mpfr_50 expected = linear_threshold(at50(gamma));
     // Rounded to 25 digits: within 0.6 units of the 25th digit.
     EXPECT_PRED_FORMAT3(viscor::test::relative_close<mpfr_50>, at50(row.g), expected, mpfr_50("6e-25"))
@@ -300,7 +300,7 @@ TEST(StickingThreshold, TsujiCriticalDampingAtZeroLoad) {
   const viscor::threshold_point p{0, viscor::law_by_name("tsuji"), viscor::threshold_variable::gamma, "0"};
   const viscor::threshold_row row = viscor::compute_threshold_row(p, 30, settings);
   EXPECT_EQ(row.g, "0");
-  EXPECT_EQ(row.digits, 30);
+  EXPECT_EQ(row.certified_digits, 30);
   EXPECT_PRED_FORMAT3(viscor::test::relative_close<mpfr_50>, at50(row.gamma), mpfr_50(4 / sqrt(mpfr_50(5))),
                       mpfr_50("6e-30"));
   EXPECT_THROW(viscor::compute_threshold_row(p, 36, settings), viscor::invalid_parameter);  // > digits - 5
@@ -327,7 +327,7 @@ TEST(ReferenceTable, ParsesAndValidates) {
   // A written row reads back to the same line.
   viscor::table_row r;
   r.index = 12, r.law = "tsuji", r.alpha = "3/2", r.beta = "5/4", r.gamma = "1e-08", r.g = "0";
-  r.e = "9.99e-01", r.one_minus_e = "1e-08", r.digits = 3;
+  r.e = "9.99e-01", r.one_minus_e = "1e-08", r.certified_digits = 3;
   const std::string line = viscor::csv_line(r);
   EXPECT_EQ(viscor::parse_table(header + "\n" + line + "\n", "t.csv").rows.at(0).text, line);
 }

@@ -20,6 +20,7 @@
 #include <viscor/exact/exact_solutions.hpp>
 #include <viscor/exact/exact_tsuji.hpp>
 #include <viscor/core/exceptions.hpp>
+#include <viscor/core/field_names.hpp>
 #include <viscor/tables/grid_spec.hpp>
 #include <viscor/core/impact_result.hpp>
 #include <viscor/approx/integrals.hpp>

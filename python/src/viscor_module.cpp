@@ -11,6 +11,7 @@
 // viscor's exceptions become the Python exceptions created here (ValueError
 // subclasses for bad input), with the library's messages.
 #include <viscor/certify/extern_templates.hpp>  // first: the solvers are compiled once, in libviscor
+#include <viscor/core/field_names.hpp>
 
 #include "python_objects.hpp"
 
@@ -292,7 +293,7 @@ py::tuple evaluate(const evaluate_request& q, py::array_t<double, py::array::c_s
         for (py::ssize_t i = first; i < last; ++i) {
           try {
             const evaluation<double> r = evaluate_one(pg[i], pgg[i], pt[i]);
-            pe[i] = r.e, pome[i] = r.one_minus_e, pb[i] = r.empirical_bound;
+            pe[i] = r.e, pome[i] = r.one_minus_e, pb[i] = r.bound;
             pm[i] = static_cast<std::int8_t>(r.method);
             po[i] = static_cast<std::int8_t>(r.outcome);  // 0 rebound, 1 stick, 2 undecided
           } catch (const std::exception& ex) {
@@ -458,9 +459,9 @@ PYBIND11_MODULE(_viscor, m) {
             py::dict d;
             d["in_domain"] = v.in_domain;
             if (!v.in_domain) return d;
-            d["outcome"] = std::string(viscor::to_string(v.outcome));
-            d["e"] = v.e;
-            d["one_minus_e"] = v.one_minus_e;
+            d[viscor::field::outcome] = std::string(viscor::to_string(v.outcome));
+            d[viscor::field::e] = v.e;
+            d[viscor::field::one_minus_e] = v.one_minus_e;
             d["e_squared"] = v.e_squared;
             return d;
           },

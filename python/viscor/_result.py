@@ -70,9 +70,21 @@ class Result:
         return f"viscor.Result({shown})"
 
     @property
+    def working_digits(self):
+        """The decimal digits a computation worked with (precision.digits; a
+        ``certified`` object's own working_digits)."""
+        if "working_digits" in self._fields:
+            return self._fields["working_digits"]
+        precision = self._fields.get("precision")
+        if isinstance(precision, dict):
+            return precision.get("digits")
+        raise AttributeError("no field 'working_digits' in this result")
+
+    @property
     def digits(self):
-        """Decimal digits: the working precision of a computation (precision.digits),
-        or, in a ``certified`` object, the certified significant digits."""
+        """The older name: the working precision of a computation (precision.digits),
+        or, in a ``certified`` object, the certified significant digits (read
+        ``working_digits`` or ``certified_digits``)."""
         if "digits" in self._fields:
             return self._fields["digits"]
         precision = self._fields.get("precision")

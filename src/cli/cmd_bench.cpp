@@ -18,6 +18,7 @@
 // solve in double on the same kind of points, in the same run.
 #include "cli_common.hpp"
 #include "command_registry.hpp"
+#include <viscor/core/field_names.hpp>
 #include <viscor/jobs/data_directory.hpp>
 #include <viscor/jobs/surrogate_files.hpp>
 
@@ -57,7 +58,7 @@ std::pair<std::string, int> table_value(const csv_table& t, const std::string& f
   for (const auto& row : t.rows)
     if (row.fields[col("alpha")] == law.alpha.to_string() && row.fields[col("beta")] == law.beta.to_string() &&
         row.fields[col("gamma")] == gamma && row.fields[col("g")] == g)
-      return {row.fields[col("e")], std::stoi(row.fields[col("digits")])};
+      return {row.fields[col(field::e)], std::stoi(row.fields[col(field::certified_digits_column)])};
   throw invalid_parameter("--table " + file + " has no row for " + law.describe() + ", gamma = " + gamma +
                           ", g = " + g + " (the bench's point set)");
 }
@@ -289,7 +290,7 @@ struct bench_command {
     j["command"] = "bench";
     j["mode"] = "surrogate";
     j["points_per_law"] = surrogate_points;
-    j["method"] = method;
+    j[field::method] = method;
     j["fma_path"] = surrogate::cpu_has_fma();
     j["rows"] = rows;
     j["skipped_without_surrogate"] = missing;
@@ -334,7 +335,7 @@ struct bench_command {
             const std::string e = r.text();
             using std::abs;
             using std::pow;
-            const Real certified = parse_real<Real>(p.e_table, "e"), extended = parse_real<Real>(e, "e");
+            const Real certified = parse_real<Real>(p.e_table, field::e), extended = parse_real<Real>(e, field::e);
             // p.table_digits significant digits: |error| < 10^(1 - digits) |e| (e = 0: a certified stick).
             const Real allowed = Real(pow(Real(10), 1 - p.table_digits)) * abs(certified);
             if (!(abs(extended - certified) <= allowed))
@@ -369,7 +370,7 @@ struct bench_command {
           std::vector<Ref> abs_err, rel_err;
           for (std::size_t i = 0; i < used.size(); ++i) {
             const Ref ref = parse_real<Ref>(used[i]->e_ref, "reference");
-            const Ref err = abs(parse_real<Ref>(results[i], "e") - ref);
+            const Ref err = abs(parse_real<Ref>(results[i], field::e) - ref);
             abs_err.push_back(err);
             if (ref > 0) rel_err.push_back(Ref(err / ref));
           }
@@ -404,7 +405,7 @@ struct bench_command {
       text << "| " << r.name << " | " << r.precision << " | " << (r.points ? buffer : "-") << " | " << r.max_abs
            << " | " << r.median_abs << " | " << r.max_rel << " | " << r.median_rel << " | " << r.points << " |\n";
       json o;
-      o["method"] = r.name, o["scalar"] = r.precision, o["median_seconds"] = r.median_seconds;
+      o[field::method] = r.name, o["scalar"] = r.precision, o["median_seconds"] = r.median_seconds;
       o["max_abs_error"] = r.max_abs, o["median_abs_error"] = r.median_abs;
       o["max_rel_error"] = r.max_rel, o["median_rel_error"] = r.median_rel, o["points"] = r.points;
       rows_json.push_back(o);

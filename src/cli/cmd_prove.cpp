@@ -4,6 +4,7 @@
 #include "command_registry.hpp"
 
 #if VISCOR_HAS_ARB
+#include <viscor/core/field_names.hpp>
 #include <viscor/jobs/proof_report.hpp>
 
 #include <algorithm>
@@ -33,8 +34,8 @@ struct prove_command {
     text << "law        " << model.describe() << "\ngamma      " << gamma << "\ng          " << g << "\n";
     const cor_enclosure proof = add_proof(model, gamma, g, digits, text, j);
     const proven_impact& p = proof.balls;
-    j["outcome"] = std::string(to_string(p.outcome));
-    j["steps"] = p.steps;
+    j[field::outcome] = std::string(to_string(p.outcome));
+    j[field::steps] = p.steps;
     if (p.outcome == proven_outcome::rebound) {
       // The value fields hold only proven digits: the exact value correctly rounded
       // to its proven digits (null when none are proven). The ball's midpoint, with
@@ -44,16 +45,16 @@ struct prove_command {
       auto shown = [](const ball& x) { return std::max(10, proven_impact::relative_digits(x) + 2); };
       json enclosure;
       for (const auto& [name, value, bounds] :
-           {std::tuple<const char*, const ball*, const proven_bounds*>{"e", &p.e, &proof.e},
-            {"one_minus_e", &p.one_minus_e, &proof.one_minus_e},
-            {"contact_time", &p.contact_time, proof.contact_time ? &*proof.contact_time : nullptr}}) {
-        j[name] = bounds && bounds->digits > 0 ? json(bounds->rounded) : json(nullptr);
+           {std::tuple<const char*, const ball*, const proven_bounds*>{field::e, &p.e, &proof.e},
+            {field::one_minus_e, &p.one_minus_e, &proof.one_minus_e},
+            {field::contact_time, &p.contact_time, proof.contact_time ? &*proof.contact_time : nullptr}}) {
+        j[name] = bounds && bounds->proven_digits > 0 ? json(bounds->rounded) : json(nullptr);
         j[std::string(name) + "_midpoint"] = value->mid_str(shown(*value));
         enclosure[name] = value->str(shown(*value));
       }
       j["enclosure"] = enclosure;
     } else if (p.outcome == proven_outcome::stick) {
-      j["e"] = "0", j["one_minus_e"] = "1";
+      j[field::e] = "0", j[field::one_minus_e] = "1";
     }
     text << "steps      " << p.steps << "\n";
     output.emit(text.str(), j);

@@ -124,7 +124,7 @@ struct certified_result {
   impact_outcome outcome = impact_outcome::rebound;
   bool outcome_certified = true;  ///< false: the computations disagree on rebound versus stick
   Real e = 0, one_minus_e = 1, contact_time = 0, max_compression = 0;  ///< the reference, rounded to Real
-  int digits = 0;  ///< certified significant digits of e, 1 - e, T_f and u_max (0: none)
+  int certified_digits = 0;  ///< certified significant digits of e, 1 - e, T_f and u_max (0: none)
   /// Per quantity, before the safety margin: the least agreement of taylor and adaptive with the reference.
   int digits_e = 0, digits_one_minus_e = 0, digits_contact_time = 0, digits_max_compression = 0;
   int absolute_digits_e = 0;       ///< certified decimal places of e (-log10 of its absolute spread, minus margin)
@@ -299,10 +299,10 @@ void certify_against_reference(const contact_law& law, const Real& gamma, const 
   out.absolute_digits_e = std::min(t.absolute_digits_e, i.absolute_digits_e);
   const int agreement =
       std::min({out.digits_e, out.digits_one_minus_e, out.digits_contact_time, out.digits_max_compression});
-  out.digits = std::max(0, agreement - options.safety_margin);
+  out.certified_digits = std::max(0, agreement - options.safety_margin);
   out.absolute_digits_e = std::max(0, out.absolute_digits_e - options.safety_margin);
   out.near_sticking = !out.outcome_certified || (ref.outcome == impact_outcome::rebound && ref.e < Ref(1) / 1000);
-  if (!out.outcome_certified) out.digits = 0, out.absolute_digits_e = 0;
+  if (!out.outcome_certified) out.certified_digits = 0, out.absolute_digits_e = 0;
 }
 
 }  // namespace detail
@@ -363,10 +363,10 @@ void certify_closed_form_against_reference(const Real& gamma, const Real& g, con
   out.digits_contact_time = c.digits_contact_time, out.digits_max_compression = c.digits_max_compression;
   const int agreement =
       std::min({out.digits_e, out.digits_one_minus_e, out.digits_contact_time, out.digits_max_compression});
-  out.digits = std::max(0, agreement - options.safety_margin);
+  out.certified_digits = std::max(0, agreement - options.safety_margin);
   out.absolute_digits_e = std::max(0, c.absolute_digits_e - options.safety_margin);
   out.near_sticking = !out.outcome_certified || (ref.outcome == impact_outcome::rebound && ref.e < Ref(1) / 1000);
-  if (!out.outcome_certified) out.digits = 0, out.absolute_digits_e = 0;
+  if (!out.outcome_certified) out.certified_digits = 0, out.absolute_digits_e = 0;
 }
 
 // Runs f.template operator()<Ref>(reference digits) in certify's reference type for

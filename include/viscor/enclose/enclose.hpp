@@ -33,8 +33,8 @@ namespace viscor::proofs {
 struct proven_bounds {
   std::string lower;  ///< a decimal <= the exact value
   std::string upper;  ///< a decimal >= the exact value
-  int digits = 0;     ///< d: both bounds round (to nearest) to the same d-digit decimal; 0 if none
-  std::string rounded;  ///< that decimal: the exact value correctly rounded to `digits` digits (empty if none)
+  int proven_digits = 0;  ///< d: both bounds round (to nearest) to the same d-digit decimal; 0 if none
+  std::string rounded;  ///< that decimal: the exact value correctly rounded to `proven_digits` digits (empty if none)
 };
 
 /// What enclose() proved about one impact.
@@ -96,15 +96,15 @@ inline proven_bounds bounds_of(const ball& x, int cap) {
   ball_end(hi, x, true);
   const int relative = x.rad_double() == 0 ? cap : std::min(cap, proven_impact::relative_digits(x));
   const bool one_sign = x.positive() || x.negative() || x.rad_double() == 0;
-  for (int d = std::min(cap, relative + 3); one_sign && d >= 1 && b.digits == 0; --d) {
+  for (int d = std::min(cap, relative + 3); one_sign && d >= 1 && b.proven_digits == 0; --d) {
     mpfr_exp_t e_lo = 0, e_hi = 0;
     char* s_lo = mpfr_get_str(nullptr, &e_lo, 10, static_cast<std::size_t>(d), lo, MPFR_RNDN);
     char* s_hi = mpfr_get_str(nullptr, &e_hi, 10, static_cast<std::size_t>(d), hi, MPFR_RNDN);
-    if (e_lo == e_hi && std::string(s_lo) == s_hi) b.digits = d;
+    if (e_lo == e_hi && std::string(s_lo) == s_hi) b.proven_digits = d;
     mpfr_free_str(s_lo);
     mpfr_free_str(s_hi);
   }
-  if (b.digits > 0) b.rounded = decimal(lo, b.digits, MPFR_RNDN);
+  if (b.proven_digits > 0) b.rounded = decimal(lo, b.proven_digits, MPFR_RNDN);
   // Enough digits that the two bounds differ where the ball does (and at least 10).
   const int shown = std::max(10, std::min(cap, relative) + 5);
   b.lower = decimal(lo, shown, MPFR_RNDD);

@@ -6,6 +6,7 @@
 // surrogate in double (never silently outside its domain or for a law without one).
 #pragma once
 
+#include <viscor/core/field_names.hpp>
 #include <viscor/jobs/command_output.hpp>
 #include <viscor/jobs/json_fields.hpp>
 #include <viscor/jobs/surrogate_files.hpp>
@@ -62,9 +63,9 @@ struct approx_job : approx_request {
     j["formula"] = "surrogate";
     j["law"] = law_json(model);
     j["gamma"] = gamma, j["g"] = g;
-    j["e"] = number(v.e);
-    j["one_minus_e"] = number(v.one_minus_e);
-    j["outcome"] = std::string(to_string(v.outcome));
+    j[field::e] = number(v.e);
+    j[field::one_minus_e] = number(v.one_minus_e);
+    j[field::outcome] = std::string(to_string(v.outcome));
     j["error_bound"] = surrogate_bound_json(*s);
     std::ostringstream text;
     text << "law          " << model.describe() << "\n"
@@ -172,7 +173,7 @@ struct approx_job : approx_request {
           if (s == coefficient_source::chebyshev_beta) one["theta"] = number(theta_of_g(c.alpha, g_value));
           one["e_squared"] = number(r.e_squared);
           if (wants("prop2")) {
-            one["e"] = number(r.e);
+            one[field::e] = number(r.e);
             row("prop2 (36) min(e_+, e_s)", from, number(r.e));
           }
           if (wants("prop2_squared")) {

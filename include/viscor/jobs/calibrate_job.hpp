@@ -7,6 +7,7 @@
 //   surrogate, a load outside its domain, or a target outside 0.01 <= e < 1.
 #pragma once
 
+#include <viscor/core/field_names.hpp>
 #include <viscor/jobs/command_output.hpp>
 #include <viscor/jobs/json_fields.hpp>
 #include <viscor/jobs/physical_inputs.hpp>
@@ -51,7 +52,7 @@ inline command_output calibrate_by_surrogate(const calibrate_request& q, bool is
   command_output out;
   json& j = out.object;
   j["command"] = "calibrate";
-  j["method"] = "surrogate";
+  j[field::method] = "surrogate";
   j["law"] = law_json(q.law);
   j["target_e"] = *q.target_e;
   if (is_physical) {
@@ -76,10 +77,10 @@ inline command_output calibrate_by_surrogate(const calibrate_request& q, bool is
   const surrogate::surrogate_value v = (*s)(gamma, g_value);
   j["gamma"] = number(gamma);
   j["g"] = number(g_value);
-  j["e"] = number(v.e);
+  j[field::e] = number(v.e);
   j["error_bound"] = surrogate_bound_json(*s);
   j["precision"] = scalar_json<double>();
-  j["seconds"] = seconds;
+  j[field::seconds] = seconds;
   std::ostringstream text;
   text << "law        " << q.law.describe() << "\n"
        << "target e   " << *q.target_e << "\n";
@@ -132,13 +133,13 @@ inline command_output calibrate_by_solving(const calibrate_request& q, bool is_p
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     j["gamma"] = number(r.gamma);
     j["g"] = number(r.g);
-    j["e"] = number(r.e);
+    j[field::e] = number(r.e);
     j["e_error"] = number(r.e_error);
     j["gamma_lo"] = number(r.gamma_lo);
     j["gamma_hi"] = number(r.gamma_hi);
     j["solves"] = r.solves;
     j["precision"] = scalar_json<Real>();
-    j["seconds"] = seconds;
+    j[field::seconds] = seconds;
     text << "gamma      " << number(r.gamma) << " (scaled)\n"
          << "g          " << number(r.g) << " (scaled load)\n"
          << "e          " << number(r.e) << " at gamma (solve_impact)\n"

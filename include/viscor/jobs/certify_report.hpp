@@ -1,9 +1,11 @@
 // `viscor cor ... --certify`: the certified result (viscor::certify) as text and
 // JSON. The value is printed rounded to its certified digits, then the digits, then
 // every contributing computation at its own full precision, so a reader can audit
-// the claim. JSON field names are those of certified_result / certified_computation.
+// the claim. JSON field names are those of certified_result / certified_computation
+// (core/field_names.hpp); `digits` repeats certified_digits under its older name.
 #pragma once
 
+#include <viscor/core/field_names.hpp>
 #include <viscor/jobs/json_fields.hpp>
 #include <viscor/jobs/files.hpp>
 
@@ -33,34 +35,36 @@ void certify_and_report(const contact_law& law, const Real& gamma, const Real& g
   const certified_result<Real> c = certify<Real>(law, gamma, g);
   const bool stick = c.outcome == impact_outcome::stick;
   json out;
-  out["outcome"] = std::string(to_string(c.outcome));
+  out[field::outcome] = std::string(to_string(c.outcome));
   out["outcome_certified"] = c.outcome_certified;
-  out["digits"] = c.digits;
-  out["e"] = stick && c.outcome_certified ? std::string("0") : rounded_to_certified(c.e, c.digits);
-  out["one_minus_e"] = stick && c.outcome_certified ? std::string("1") : rounded_to_certified(c.one_minus_e, c.digits);
-  out["contact_time"] = rounded_to_certified(c.contact_time, c.digits);
-  out["max_compression"] = rounded_to_certified(c.max_compression, c.digits);
+  out[field::certified_digits] = c.certified_digits;
+  out[field::certified_digits_column] = c.certified_digits;  // the older name, still written
+  out[field::e] = stick && c.outcome_certified ? std::string("0") : rounded_to_certified(c.e, c.certified_digits);
+  out[field::one_minus_e] =
+      stick && c.outcome_certified ? std::string("1") : rounded_to_certified(c.one_minus_e, c.certified_digits);
+  out[field::contact_time] = rounded_to_certified(c.contact_time, c.certified_digits);
+  out[field::max_compression] = rounded_to_certified(c.max_compression, c.certified_digits);
   out["digits_e"] = c.digits_e;
   out["digits_one_minus_e"] = c.digits_one_minus_e;
   out["digits_contact_time"] = c.digits_contact_time;
   out["digits_max_compression"] = c.digits_max_compression;
   out["absolute_digits_e"] = c.absolute_digits_e;
   out["near_sticking"] = c.near_sticking;
-  out["working_digits"] = c.working_digits;
+  out[field::working_digits] = c.working_digits;
   out["safety_margin"] = c.safety_margin;
   json list = json::array();
   for (const auto& m : c.computations) {
     json k;
     k["source"] = std::string(to_string(m.source));
     k["precision_digits"] = m.precision_digits;
-    k["outcome"] = std::string(to_string(m.outcome));
-    k["e"] = m.e_text;
-    k["one_minus_e"] = m.one_minus_e_text;
-    k["contact_time"] = m.contact_time_text;
-    k["max_compression"] = number(m.max_compression);
-    k["error_estimate"] = to_decimal_string(m.error_estimate, 3);
-    k["steps"] = m.steps;
-    k["seconds"] = m.seconds;
+    k[field::outcome] = std::string(to_string(m.outcome));
+    k[field::e] = m.e_text;
+    k[field::one_minus_e] = m.one_minus_e_text;
+    k[field::contact_time] = m.contact_time_text;
+    k[field::max_compression] = number(m.max_compression);
+    k[field::error_estimate] = to_decimal_string(m.error_estimate, 3);
+    k[field::steps] = m.steps;
+    k[field::seconds] = m.seconds;
     k["digits_e"] = m.digits_e;
     k["digits_one_minus_e"] = m.digits_one_minus_e;
     k["digits_contact_time"] = m.digits_contact_time;
@@ -70,14 +74,14 @@ void certify_and_report(const contact_law& law, const Real& gamma, const Real& g
   out["computations"] = list;
   j["certified"] = out;
 
-  text << "certified  " << (c.outcome_certified ? "" : "NO: the computations disagree on the outcome; ") << c.digits
-       << " significant digits (agreement of " << c.computations.size() << " computations minus a margin of "
+  text << "certified  " << (c.outcome_certified ? "" : "NO: the computations disagree on the outcome; ")
+       << c.certified_digits << " significant digits (agreement of " << c.computations.size() << " computations minus a margin of "
        << c.safety_margin << ")\n"
        << "  outcome  " << to_string(c.outcome) << (c.outcome_certified ? " (all agree)" : " (reference)") << "\n"
-       << "  e        " << out["e"].get<std::string>() << "\n"
-       << "  1 - e    " << out["one_minus_e"].get<std::string>() << "\n"
-       << (stick ? "  T_stop   " : "  T_f      ") << out["contact_time"].get<std::string>() << "\n"
-       << "  u_max    " << out["max_compression"].get<std::string>() << "\n";
+       << "  e        " << out[field::e].get<std::string>() << "\n"
+       << "  1 - e    " << out[field::one_minus_e].get<std::string>() << "\n"
+       << (stick ? "  T_stop   " : "  T_f      ") << out[field::contact_time].get<std::string>() << "\n"
+       << "  u_max    " << out[field::max_compression].get<std::string>() << "\n";
   if (c.near_sticking)
     text << "  near the sticking threshold: e is certified to " << c.absolute_digits_e << " decimal places (absolute)\n";
   for (const auto& m : c.computations) {

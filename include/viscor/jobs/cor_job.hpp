@@ -4,6 +4,7 @@
 // one point: scaled or physical inputs, optionally certified and proven.
 #pragma once
 
+#include <viscor/core/field_names.hpp>
 #include <viscor/jobs/certify_report.hpp>
 #include <viscor/jobs/command_output.hpp>
 #include <viscor/jobs/json_fields.hpp>
@@ -46,18 +47,18 @@ inline integration_method parse_integration_method(const std::string& text, cons
 /// The result fields of one impact (after law, gamma, g and precision).
 template <class Real>
 void add_result_json(json& j, const impact_result<Real>& r, double seconds) {
-  j["method"] = std::string(to_string(r.method));
-  j["e"] = number(r.e);
-  j["one_minus_e"] = number(r.one_minus_e);
-  j["outcome"] = std::string(to_string(r.outcome));
-  j["contact_time"] = number(r.contact_time);
-  j["max_compression"] = number(r.max_compression);
+  j[field::method] = std::string(to_string(r.method));
+  j[field::e] = number(r.e);
+  j[field::one_minus_e] = number(r.one_minus_e);
+  j[field::outcome] = std::string(to_string(r.outcome));
+  j[field::contact_time] = number(r.contact_time);
+  j[field::max_compression] = number(r.max_compression);
   if (r.outcome == impact_outcome::stick) j["stop_overlap"] = number(r.stop_overlap);
   j["time_of_max_compression"] = number(r.time_of_max_compression);
   j["energy_residual"] = number(r.energy_residual);
-  j["error_estimate"] = number(r.error_estimate);
-  j["steps"] = r.steps;
-  j["seconds"] = seconds;
+  j[field::error_estimate] = number(r.error_estimate);
+  j[field::steps] = r.steps;
+  j[field::seconds] = seconds;
 }
 
 /// Solves one impact at scaled (gamma, g) in the working type Real and adds its
@@ -191,7 +192,7 @@ inline command_output run_cor(cor_request q) {
     j["precision"] = scalar_json<Real>();
     add_result_json(j, r, seconds);
     if (scales) {
-      j["contact_time_s"] = number(Real(r.contact_time * scales->time_scale));
+      j[field::contact_time_s] = number(Real(r.contact_time * scales->time_scale));
       j["max_compression_m"] = number(Real(r.max_compression * scales->length_scale));
     }
     detail::describe_impact(text, r, gamma_value, g_value, scales, seconds);

@@ -5,6 +5,7 @@
 // report it; the forward job can also write a complete single-bead drop deck.
 #pragma once
 
+#include <viscor/core/field_names.hpp>
 #include <viscor/jobs/command_output.hpp>
 #include <viscor/jobs/files.hpp>
 #include <viscor/jobs/json_fields.hpp>
@@ -184,7 +185,7 @@ struct dem_job : dem_request {
       else
         run_forward<Real>(model, impact, j, text);
       j["precision"] = scalar_json<Real>();
-      j["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      j[field::seconds] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       out = {text.str(), j};
     });
     return out;
@@ -229,7 +230,7 @@ struct dem_job : dem_request {
     j["gamma0"] = number(d.gamma0);
     j["gamma"] = number(d.calibration.scaled.gamma);
     j["g"] = number(d.calibration.scaled.g);
-    j["e"] = number(d.calibration.scaled.e);
+    j[field::e] = number(d.calibration.scaled.e);
     j["e_error"] = number(d.calibration.scaled.e_error);
     j["time_scale_s"] = number(d.calibration.time_scale);
     text << "impact      e = " << target_e << " at v0 = " << v0 << " m/s, gravity = " << gravity
@@ -276,7 +277,7 @@ struct dem_job : dem_request {
     snippet += dem::snippet_time_step_line(model, to_decimal_string(timing.time_step, 6),
                                            to_decimal_string(timing.contact_time, 6), timing.steps_per_time_scale);
     j["snippet"] = snippet;
-    j["contact_time_s"] = number(timing.contact_time);
+    j[field::contact_time_s] = number(timing.contact_time);
     j["time_step_s"] = number(timing.time_step);
     text << "time step   the contact lasts " << to_decimal_string(timing.contact_time, 6) << " s; dt = T/"
          << timing.steps_per_time_scale << " = " << to_decimal_string(timing.time_step, 6) << " s (T = "
@@ -370,8 +371,8 @@ struct dem_job : dem_request {
         const impact_result<Real> r = dem::e_for_deck(model, at, deck_value);
         json row;
         row["v0"] = speed, row["gravity"] = l.gravity, row["force"] = l.force;
-        row["e"] = number(r.e);
-        row["outcome"] = to_string(r.outcome);
+        row[field::e] = number(r.e);
+        row[field::outcome] = to_string(r.outcome);
         rows.push_back(row);
         text << speed << std::string(speed.size() < 12 ? 12 - speed.size() : 1, ' ') << l.gravity
              << std::string(l.gravity.size() < 17 ? 17 - l.gravity.size() : 1, ' ') << l.force

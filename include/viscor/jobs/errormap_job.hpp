@@ -4,6 +4,7 @@
 // solve_impact (for laws or regions without tables; the map records which).
 #pragma once
 
+#include <viscor/core/field_names.hpp>
 #include <viscor/jobs/files.hpp>
 
 #include <viscor/config.hpp>
@@ -73,12 +74,12 @@ inline std::vector<reference_point> reference_from_tables(const contact_law& law
     for (const auto& row : t.rows) {
       if (row.fields[col("alpha")] != law.alpha.to_string() || row.fields[col("beta")] != law.beta.to_string())
         continue;
-      const std::string& e = row.fields[col("e")];
+      const std::string& e = row.fields[col(field::e)];
       if (e.empty()) continue;
       reference_point p;
       p.gamma = row.fields[col("gamma")], p.g = row.fields[col("g")], p.e = e;
-      p.one_minus_e = row.fields[col("one_minus_e")];
-      p.outcome = row.fields[col("outcome")] == "stick" ? impact_outcome::stick : impact_outcome::rebound;
+      p.one_minus_e = row.fields[col(field::one_minus_e)];
+      p.outcome = row.fields[col(field::outcome)] == "stick" ? impact_outcome::stick : impact_outcome::rebound;
       points.push_back(p);
     }
   }

@@ -2,6 +2,7 @@
 // at g = 0; Tsuji at g = 0), as `viscor exact` and viscor.exact report it.
 #pragma once
 
+#include <viscor/core/field_names.hpp>
 #include <viscor/jobs/command_output.hpp>
 #include <viscor/jobs/json_fields.hpp>
 
@@ -49,13 +50,13 @@ inline command_output run_exact(const exact_request& q) {
       return;
     }
     j["formula"] = r->formula;
-    j["e"] = number(r->e);
-    j["one_minus_e"] = number(r->one_minus_e);
-    j["outcome"] = std::string(to_string(r->outcome));
-    if (r->contact_time) j["contact_time"] = number(*r->contact_time);
-    if (r->max_compression) j["max_compression"] = number(*r->max_compression);
+    j[field::e] = number(r->e);
+    j[field::one_minus_e] = number(r->one_minus_e);
+    j[field::outcome] = std::string(to_string(r->outcome));
+    if (r->contact_time) j[field::contact_time] = number(*r->contact_time);
+    if (r->max_compression) j[field::max_compression] = number(*r->max_compression);
     if (r->time_of_max_compression) j["time_of_max_compression"] = number(*r->time_of_max_compression);
-    j["seconds"] = seconds;
+    j[field::seconds] = seconds;
     text << "formula  " << r->formula << "\n"
          << "outcome  " << to_string(r->outcome) << " (contact ends at zero overlap u = 0)\n"
          << "e        " << number(r->e) << "\n"

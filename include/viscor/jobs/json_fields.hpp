@@ -5,6 +5,7 @@
 // take their fields from here and from the jobs that use these helpers.
 #pragma once
 
+#include <viscor/core/field_names.hpp>
 #include <viscor/core/contact_law.hpp>
 #include <viscor/core/exceptions.hpp>
 #include <viscor/core/real_io.hpp>

@@ -2,6 +2,7 @@
 // `viscor cor --prove` (docs/proofs.md): the same JSON names in both (docs/json-schema.md).
 #pragma once
 
+#include <viscor/core/field_names.hpp>
 #include <viscor/jobs/json_fields.hpp>
 #include <viscor/jobs/files.hpp>
 
@@ -22,24 +23,24 @@ inline proofs::cor_enclosure add_proof(const contact_law& law, const std::string
   j["proof"] = p.how;
   text << "proven     " << proofs::to_string(p.outcome) << " (" << p.how << ")\n";
   if (p.outcome == proofs::proven_outcome::undecided) {
-    j["proven_digits"] = 0;
+    j[field::proven_digits] = 0;
     return p;
   }
   const auto show = [&](const char* name, const char* label, const proofs::proven_bounds& b, bool main) {
     j[std::string(name) + "_lower"] = b.lower;
     j[std::string(name) + "_upper"] = b.upper;
-    j[main ? std::string("proven_digits") : "proven_digits_" + std::string(name)] = b.digits;
+    j[main ? std::string(field::proven_digits) : "proven_digits_" + std::string(name)] = b.proven_digits;
     if (b.lower == b.upper) {  // an exact value (e = 0 of a stick, 1 - e = 0 at gamma = 0)
       text << label << b.lower << " (exact)\n";
       return;
     }
-    text << label << "[" << b.lower << ", " << b.upper << "]\n           " << b.digits
-         << " proven correctly rounded digits" << (b.digits > 0 ? ": " + b.rounded : std::string()) << "\n";
+    text << label << "[" << b.lower << ", " << b.upper << "]\n           " << b.proven_digits
+         << " proven correctly rounded digits" << (b.proven_digits > 0 ? ": " + b.rounded : std::string()) << "\n";
   };
-  show("e", "e in       ", p.e, true);
-  show("one_minus_e", "1 - e in   ", p.one_minus_e, false);
-  if (p.contact_time) show("contact_time", "T_f in     ", *p.contact_time, false);
-  if (p.max_compression) show("max_compression", "u_max in   ", *p.max_compression, false);
+  show(field::e, "e in       ", p.e, true);
+  show(field::one_minus_e, "1 - e in   ", p.one_minus_e, false);
+  if (p.contact_time) show(field::contact_time, "T_f in     ", *p.contact_time, false);
+  if (p.max_compression) show(field::max_compression, "u_max in   ", *p.max_compression, false);
   return p;
 }
 

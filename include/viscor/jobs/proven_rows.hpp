@@ -4,6 +4,7 @@
 // (compute_row). Needs Arb (VISCOR_HAS_ARB).
 #pragma once
 
+#include <viscor/core/field_names.hpp>
 #include <viscor/jobs/table_format.hpp>
 
 #include <viscor/core/detail/exact_decimal.hpp>
@@ -85,14 +86,14 @@ inline std::string proven_fields(const grid_point& p, int digits, const table_ro
   const std::string& shift = certified_e_shift;
   const std::string e =
       shift.empty() ? row.e : (exact_decimal::parse(row.e, "e") + exact_decimal::parse(shift, "shift")).to_string();
-  for (const auto& [name, value, bounds] : {std::tuple{"e", &e, &proof.e},
-                                            std::tuple{"one_minus_e", &row.one_minus_e, &proof.one_minus_e}})
-    if (!detail::within_last_digit(*value, row.digits, bounds->lower, bounds->upper))
+  for (const auto& [name, value, bounds] : {std::tuple{field::e, &e, &proof.e},
+                                            std::tuple{field::one_minus_e, &row.one_minus_e, &proof.one_minus_e}})
+    if (!detail::within_last_digit(*value, row.certified_digits, bounds->lower, bounds->upper))
       throw certification_error(where + ": the certified " + std::string(name) + " = " + *value + " (" +
-                                std::to_string(row.digits) + " digits) is outside the proven enclosure [" +
+                                std::to_string(row.certified_digits) + " digits) is outside the proven enclosure [" +
                                 bounds->lower + ", " + bounds->upper + "]; one of the two is wrong: please report it");
   return "," + proof.e.lower + "," + proof.e.upper + "," + proof.one_minus_e.lower + "," + proof.one_minus_e.upper +
-         "," + std::to_string(proof.e.digits) + "," + std::string(proofs::to_string(proof.outcome));
+         "," + std::to_string(proof.e.proven_digits) + "," + std::string(proofs::to_string(proof.outcome));
 }
 
 }  // namespace viscor::jobs

@@ -4,6 +4,7 @@
 // Python module's viscor.scene call it.
 #pragma once
 
+#include <viscor/core/field_names.hpp>
 #include <viscor/jobs/data_directory.hpp>
 #include <viscor/jobs/json_fields.hpp>
 #include <viscor/jobs/scene_file.hpp>
@@ -136,7 +137,8 @@ inline scene_result run_scene_file(const scene_file& file, const std::string& pa
     if (!as_json) {
       csv.reserve(s.velocities.size() * 200);
       csv += std::string("index,v0,gamma,g,outcome,sticking,e,one_minus_e,contact_time_s,") +
-             (s.relative ? "empirical_bound_relative" : "empirical_bound") + ",method,working_digits,seconds\n";
+             (s.relative ? field::empirical_bound_relative : field::empirical_bound) +
+             ",method,working_digits,seconds\n";
     }
     run_scene(s, map ? &*map : nullptr, [&](const scene_row<Real>& row) {
       const evaluation<Real>& r = row.result;
@@ -144,22 +146,23 @@ inline scene_result run_scene_file(const scene_file& file, const std::string& pa
       ++methods[to_string(r.method)];
       sticking += stuck;
       evaluation_seconds += r.seconds;
-      if (r.empirical_bound > worst_bound) worst_bound = r.empirical_bound;
+      if (r.bound > worst_bound) worst_bound = r.bound;
       const std::string t = row.contact_time ? full(*row.contact_time) : std::string();
       if (as_json) {
         json j;
         j["index"] = index, j["v0"] = full(row.v0), j["gamma"] = full(row.gamma), j["g"] = full(row.g);
-        j["outcome"] = std::string(to_string(r.outcome)), j["sticking"] = stuck;
-        j["e"] = full(r.e), j["one_minus_e"] = full(r.one_minus_e);
-        j["contact_time_s"] = row.contact_time ? json(t) : json(nullptr);
-        j[s.relative ? "empirical_bound_relative" : "empirical_bound"] = short_number(r.empirical_bound);
-        j["method"] = to_string(r.method), j["working_digits"] = r.digits, j["seconds"] = r.seconds;
+        j[field::outcome] = std::string(to_string(r.outcome)), j["sticking"] = stuck;
+        j[field::e] = full(r.e), j[field::one_minus_e] = full(r.one_minus_e);
+        j[field::contact_time_s] = row.contact_time ? json(t) : json(nullptr);
+        j[s.relative ? field::empirical_bound_relative : field::empirical_bound] = short_number(r.bound);
+        j[field::method] = to_string(r.method), j[field::working_digits] = r.working_digits;
+        j[field::seconds] = r.seconds;
         rows.push_back(std::move(j));
       } else {
         csv += std::to_string(index) + ',' + full(row.v0) + ',' + full(row.gamma) + ',' + full(row.g) + ',' +
                std::string(to_string(r.outcome)) + ',' + (stuck ? "true" : "false") + ',' + full(r.e) + ',' +
-               full(r.one_minus_e) + ',' + t + ',' + short_number(r.empirical_bound) + ',' + to_string(r.method) +
-               ',' + std::to_string(r.digits) + ',' + seconds_text(r.seconds) + '\n';
+               full(r.one_minus_e) + ',' + t + ',' + short_number(r.bound) + ',' + to_string(r.method) +
+               ',' + std::to_string(r.working_digits) + ',' + seconds_text(r.seconds) + '\n';
       }
       ++index;
     }, source ? &*source : nullptr);
@@ -180,7 +183,7 @@ inline scene_result run_scene_file(const scene_file& file, const std::string& pa
             << "damping    gamma0 = " << to_decimal_string(s.gamma0, 12);
     if (s.calibration)
       summary << " (calibrated: e = " << *file.scene.measured_e << " at v0 = " << *file.scene.measured_speed
-              << " m/s, gravity " << *file.scene.measured_gravity << " at " << s.calibration->digits
+              << " m/s, gravity " << *file.scene.measured_gravity << " at " << s.calibration->working_digits
               << " digits: scaled gamma " << s.calibration->gamma << " at g " << s.calibration->g
               << ", |e - measured| <= " << s.calibration->e_error << ")";
     summary << "\n"
@@ -214,7 +217,7 @@ inline scene_result run_scene_file(const scene_file& file, const std::string& pa
         c["gamma0"] = s.calibration->gamma0;
         c["gamma"] = s.calibration->gamma, c["g"] = s.calibration->g;
         c["e_error"] = s.calibration->e_error;
-        c["precision"] = json{{"digits", s.calibration->digits}};
+        c["precision"] = json{{"digits", s.calibration->working_digits}};
         j["calibration"] = c;
       }
       j["tolerance"] = file.scene.tolerance;
@@ -223,7 +226,7 @@ inline scene_result run_scene_file(const scene_file& file, const std::string& pa
       j["error_map"] = map_note;
       j["surrogate"] = surrogate_note;
       j["impacts"] = index, j["sticking_impacts"] = sticking, j["methods"] = method_json;
-      j["seconds"] = total;
+      j[field::seconds] = total;
       j["rows"] = std::move(rows);
       body = j.dump(1) + "\n";
     result.object = std::move(j);

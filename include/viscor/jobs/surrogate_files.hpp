@@ -33,7 +33,7 @@ inline std::vector<surrogate::reference_value> read_verification_rows(const std:
     v.gamma = std::strtod(f[4].c_str(), nullptr), v.g = std::strtod(f[5].c_str(), nullptr);
     v.outcome = f[6] == "stick" ? impact_outcome::stick : impact_outcome::rebound;
     v.e = std::strtold(f[7].c_str(), nullptr), v.one_minus_e = std::strtold(f[8].c_str(), nullptr);
-    v.digits = std::atoi(f[11].c_str());
+    v.certified_digits = std::atoi(f[11].c_str());
     refs.push_back(v);
   }
   return refs;

@@ -9,6 +9,7 @@
 // (tools/check_layers.py), and the plain CoR format stays as it is.
 #pragma once
 
+#include <viscor/core/field_names.hpp>
 #include <viscor/jobs/json_fields.hpp>
 #include <viscor/jobs/files.hpp>
 
@@ -30,7 +31,7 @@ namespace viscor::jobs {
 /// The proof's columns, after the CoR columns.
 inline const std::vector<std::string>& proven_columns() {
   static const std::vector<std::string> names{"e_lower",           "e_upper",       "one_minus_e_lower",
-                                              "one_minus_e_upper", "proven_digits", "outcome_proven"};
+                                              "one_minus_e_upper", field::proven_digits, "outcome_proven"};
   return names;
 }
 

@@ -39,9 +39,11 @@
 // stays meaningful as gamma -> 0 (one_minus_e is computed without cancellation).
 // For an approximation or an estimate with absolute bound B at value e, the
 // relative bound is B / (1 - e - B).
-// Compatibility: evaluation::empirical_bound was called error_bound, and the scene
-// outputs' column error_bound (error_bound_relative) is now empirical_bound
-// (empirical_bound_relative); the values are unchanged.
+// Compatibility: evaluation::bound was called error_bound, then empirical_bound (the
+// result vocabulary, core/field_names.hpp: `bound` is a stated bound, its kind said by
+// the result); the scene outputs keep the column empirical_bound
+// (empirical_bound_relative), formerly error_bound (error_bound_relative); the values
+// are unchanged.
 //
 // Inputs are used exactly: solves run in a type at least as wide as Real.
 // Results are rounded to Real (the bound includes that rounding), so Real must
@@ -119,11 +121,13 @@ struct evaluation {
   Real e = 1, one_minus_e = 0;
   impact_outcome outcome = impact_outcome::rebound;
   /// Empirical bound on the error (see the header comment for how each method
-  /// obtains it): absolute on e, or relative on 1 - e when `relative`. Formerly error_bound.
-  Real empirical_bound = 0;
+  /// obtains it): absolute on e, or relative on 1 - e when `relative`; empirical, that
+  /// is measured, not proven (docs/scenes.md). Formerly error_bound, then empirical_bound;
+  /// written as empirical_bound (empirical_bound_relative) in JSON and CSV.
+  Real bound = 0;
   bool relative = false;
   evaluation_method method = evaluation_method::taylor;
-  int digits = 0;  ///< working decimal digits of the method (15 for the double approximations)
+  int working_digits = 0;  ///< working decimal digits of the method (15 for the double approximations)
   /// Scaled T_f (rebound) or stop time (stick, +inf for a creep), where the method
   /// computes it (not the approximations; exact forms only for the linear law).
   std::optional<Real> contact_time;
@@ -140,7 +144,7 @@ struct evaluation_text {
   std::string e, one_minus_e, bound, contact_time;  // bound: rounded up
   impact_outcome outcome = impact_outcome::rebound;
   evaluation_method method = evaluation_method::taylor;
-  int digits = 0;
+  int working_digits = 0;
 };
 
 // x rounded up to 3 significant digits (bounds must not shrink in print).
@@ -210,7 +214,7 @@ evaluation_text exact_in(const contact_law& law, const Real& gamma, const Real& 
   out.e = to_decimal_string(a->e), out.one_minus_e = to_decimal_string(a->one_minus_e);
   out.bound = bound_text(bound);
   if (a->contact_time) out.contact_time = to_decimal_string(*a->contact_time);
-  out.digits = decimal_digits<W>();
+  out.working_digits = decimal_digits<W>();
   return out;
 }
 
@@ -270,7 +274,7 @@ evaluation_text taylor_in(const contact_law& law, const Real& gamma, const Real&
   out.e = to_decimal_string(t.solve.e), out.one_minus_e = to_decimal_string(t.solve.one_minus_e);
   out.bound = bound_text(t.bound);
   out.contact_time = to_decimal_string(t.solve.contact_time);
-  out.digits = decimal_digits<W>();
+  out.working_digits = decimal_digits<W>();
   return out;
 }
 
@@ -284,7 +288,7 @@ evaluation_text certified_in(const contact_law& law, const Real& gamma, const Re
   out.ok = true;
   out.method = evaluation_method::certified;
   out.outcome = c.outcome;
-  out.digits = decimal_digits<W>();
+  out.working_digits = decimal_digits<W>();
   out.e = to_decimal_string(c.e), out.one_minus_e = to_decimal_string(c.one_minus_e);
   out.contact_time = to_decimal_string(c.contact_time);
   W bound;
@@ -293,8 +297,9 @@ evaluation_text certified_in(const contact_law& law, const Real& gamma, const Re
   } else if (c.outcome == impact_outcome::stick) {
     bound = 0;  // e = 0 exactly once the outcome is certified
   } else {
-    // `digits` certified significant digits: relative error < 10^(1 - digits), with a digit to spare.
-    const W rel = c.digits > 0 ? W(pow(W(10), 1 - c.digits)) : W(std::numeric_limits<W>::infinity());
+    // `certified_digits` significant digits: relative error < 10^(1 - digits), with a digit to spare.
+    const W rel = c.certified_digits > 0 ? W(pow(W(10), 1 - c.certified_digits))
+                                         : W(std::numeric_limits<W>::infinity());
     const W abs_e = c.absolute_digits_e > 0 ? W(pow(W(10), 1 - c.absolute_digits_e))
                                             : W(std::numeric_limits<W>::infinity());
     if (relative) {
@@ -337,7 +342,7 @@ class evaluator {
   /// The options it was built with.
   const evaluate_options& options() const noexcept { return m_options; }
 
-  /// e at (gamma, g) with empirical_bound <= tolerance (absolute, or relative on 1 - e).
+  /// e at (gamma, g) with bound <= tolerance (absolute, or relative on 1 - e).
   evaluation<Real> operator()(const Real& gamma, const Real& g, const Real& tolerance) const {
     const auto start = std::chrono::steady_clock::now();
     impact_parameters<Real>{m_law, gamma, g}.validate();
@@ -370,7 +375,7 @@ class evaluator {
       });
       if (t.ok && (!m_options.need_contact_time || !t.contact_time.empty())) {
         const evaluation<Real> r = from_text(t, 0);
-        if (r.empirical_bound <= tolerance) return r;
+        if (r.bound <= tolerance) return r;
       }
     }
     return by_solving(gamma, g, tolerance, tol_text);
@@ -399,9 +404,9 @@ class evaluator {
     if (!(bound <= tolerance)) return std::nullopt;
     evaluation<Real> r;
     r.e = Real(v.e), r.one_minus_e = Real(v.one_minus_e), r.outcome = v.outcome;
-    r.empirical_bound = bound;
+    r.bound = bound;
     r.method = evaluation_method::surrogate;
-    r.digits = decimal_digits<double>();
+    r.working_digits = decimal_digits<double>();
     return r;
   }
 
@@ -424,9 +429,9 @@ class evaluator {
       evaluation<Real> r;
       r.e = e, r.one_minus_e = one_minus_e;
       r.outcome = stick ? impact_outcome::stick : impact_outcome::rebound;
-      r.empirical_bound = bound;
+      r.bound = bound;
       r.method = static_cast<evaluation_method>(k);  // same order as all_approximations
-      r.digits = decimal_digits<double>();
+      r.working_digits = decimal_digits<double>();
       return r;
     }
     return std::nullopt;
@@ -455,7 +460,7 @@ class evaluator {
           if (t.bound <= tolerance) {
             evaluation<Real> r;
             r.e = t.solve.e, r.one_minus_e = t.solve.one_minus_e, r.outcome = t.solve.outcome;
-            r.empirical_bound = t.bound, r.method = evaluation_method::taylor, r.digits = decimal_digits<Real>();
+            r.bound = t.bound, r.method = evaluation_method::taylor, r.working_digits = decimal_digits<Real>();
             r.contact_time = t.solve.contact_time, r.attempts = attempt;
             return r;
           }
@@ -482,12 +487,12 @@ class evaluator {
       std::optional<evaluation<Real>> r;
       if (t.bound != "inf") {
         r = from_text(t, attempt);
-        if (r->empirical_bound <= tolerance) return *r;
+        if (r->bound <= tolerance) return *r;
       }
       if (loose) {
         loose = false;  // the same precision at full step accuracy first
       } else if (r) {
-        d += static_cast<int>(Real(ceil(log10(r->empirical_bound / tolerance)))) + 4;
+        d += static_cast<int>(Real(ceil(log10(r->bound / tolerance)))) + 4;
       } else {
         d += d / 2 + 4;
       }
@@ -506,10 +511,10 @@ class evaluator {
     r.one_minus_e = parse_real<Real>(t.one_minus_e, "one_minus_e");
     r.outcome = t.outcome;
     r.method = t.method;
-    r.digits = t.digits;
+    r.working_digits = t.working_digits;
     r.attempts = attempts;
-    r.empirical_bound = parse_real<Real>(t.bound, "bound");
-    if (t.digits > decimal_digits<Real>()) r.empirical_bound += epsilon<Real>();
+    r.bound = parse_real<Real>(t.bound, "bound");
+    if (t.working_digits > decimal_digits<Real>()) r.bound += epsilon<Real>();
     if (!t.contact_time.empty()) {
       if (t.contact_time == "inf") r.contact_time = std::numeric_limits<Real>::infinity();
       else r.contact_time = parse_real<Real>(t.contact_time, "contact_time");

@@ -111,7 +111,7 @@ inline int scene_digits(const std::string& tolerance, int extra = 3) {
 /// How gamma0 was calibrated (decimal text at the calibration's precision).
 struct scene_calibration {
   std::string gamma0, gamma, g, e_error;
-  int digits = 0;
+  int working_digits = 0;  ///< the calibration's working precision (written as precision.digits)
 };
 
 /// A scene parsed and resolved at the working precision of Real.

@@ -86,7 +86,7 @@ struct reference_value {
   double gamma = 0, g = 0;
   impact_outcome outcome = impact_outcome::rebound;
   long double e = 0, one_minus_e = 1;
-  int digits = 0;
+  int certified_digits = 0;  ///< the row's certified significant digits
 };
 
 /// Worst errors over one region.
@@ -134,14 +134,14 @@ struct applicable_checks {
 inline applicable_checks checks_for(const reference_value& r, const surrogate_targets& t, int min_certified_digits) {
   applicable_checks c;
   const bool small_gamma = r.gamma <= t.small_gamma && r.e >= 1e-2L && r.one_minus_e > 0;
-  if (r.outcome == impact_outcome::stick || r.digits >= min_certified_digits) {
+  if (r.outcome == impact_outcome::stick || r.certified_digits >= min_certified_digits) {
     c.full = true;
     c.abs_e = r.outcome == impact_outcome::rebound && r.e >= 1e-2L;
     c.abs_e_squared = true;
     c.rel_one_minus_e = small_gamma;
     return c;
   }
-  const long double rel = std::pow(10.0L, 1 - r.digits);  // relative uncertainty of e and of 1 - e
+  const long double rel = std::pow(10.0L, 1 - r.certified_digits);  // relative uncertainty of e and of 1 - e
   const long double u_e = rel * r.e;
   c.abs_e = r.e >= 1e-2L && u_e <= 1e-3L * t.abs_e;
   c.abs_e_squared = u_e * (2 * r.e + u_e) <= 1e-3L * t.abs_e_squared;

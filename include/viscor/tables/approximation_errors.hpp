@@ -19,6 +19,7 @@
 // are computed once per (law, g, source), so the quadrature costs little.
 #pragma once
 
+#include <viscor/core/field_names.hpp>
 #include <viscor/approx/approximations.hpp>
 #include <viscor/approx/closed_form.hpp>
 #include <viscor/core/contact_law.hpp>
@@ -168,7 +169,7 @@ std::vector<evaluated_row<Real>> evaluate_approximations(const csv_table& table,
     r.gamma_text = f[4], r.g_text = f[5];
     r.gamma = parse_real<Real>(f[4], "gamma");
     r.g = parse_real<Real>(f[5], "g");
-    r.e_ref = parse_real<Real>(f[7], "e");
+    r.e_ref = parse_real<Real>(f[7], field::e);
     const cor_approximations<Real>& a = cache.of(r.law);
     r.ids = applicable_approximations(a.is_kuwabara_kono(), r.g == 0, r.g >= 0);
     for (const approximation_id& id : r.ids) {

@@ -19,6 +19,7 @@
 // table_row.hpp, so readers of committed tables do not compile the solvers.
 #pragma once
 
+#include <viscor/core/field_names.hpp>
 #include <viscor/core/contact_law.hpp>
 #include <viscor/core/detail/exact_decimal.hpp>
 #include <viscor/core/exceptions.hpp>
@@ -55,7 +56,7 @@ struct table_row {
   std::string law, alpha, beta, gamma, g;
   impact_outcome outcome = impact_outcome::rebound;
   std::string e, one_minus_e, contact_time, max_compression;  ///< empty: not available
-  int digits = 0;
+  int certified_digits = 0;  ///< the CSV column `digits`
   row_source source = row_source::exact;
 };
 
@@ -65,9 +66,9 @@ struct threshold_row {
   std::int64_t index = 0;
   std::string law, alpha, beta;
   threshold_variable solve_for = threshold_variable::g;
-  std::string gamma, g;  ///< the fixed input (exact decimal) and the threshold (rounded to `digits`)
+  std::string gamma, g;  ///< the fixed input (exact decimal) and the threshold (rounded to `certified_digits`)
   std::string rebound_at, stick_at;  ///< the certified bracket, at round-trip precision
-  int digits = 0;
+  int certified_digits = 0;  ///< the CSV column `digits`
   row_source source = row_source::exact;
 };
 
@@ -75,10 +76,12 @@ enum class table_kind { cor, sticking };
 
 /// The column names of a table of kind `k`, in order.
 inline const std::vector<std::string>& table_columns(table_kind k) {
-  static const std::vector<std::string> cor{"index", "law", "alpha", "beta", "gamma", "g", "outcome", "e",
-                                            "one_minus_e", "contact_time", "max_compression", "digits", "method"};
-  static const std::vector<std::string> sticking{"index", "law", "alpha", "beta", "solve_for", "gamma",
-                                                 "g", "rebound_at", "stick_at", "digits", "method"};
+  static const std::vector<std::string> cor{"index", "law", "alpha", "beta", "gamma", "g",
+                                            field::outcome, field::e, field::one_minus_e, field::contact_time,
+                                            field::max_compression, field::certified_digits_column, field::method};
+  static const std::vector<std::string> sticking{"index", "law", "alpha", "beta", "solve_for", "gamma", "g",
+                                                 "rebound_at", "stick_at", field::certified_digits_column,
+                                                 field::method};
   return k == table_kind::cor ? cor : sticking;
 }
 
@@ -94,7 +97,7 @@ inline std::string csv_line(const table_row& r) {
   std::ostringstream s;
   s << r.index << ',' << r.law << ',' << r.alpha << ',' << r.beta << ',' << r.gamma << ',' << r.g << ','
     << to_string(r.outcome) << ',' << r.e << ',' << r.one_minus_e << ',' << r.contact_time << ','
-    << r.max_compression << ',' << r.digits << ',' << to_string(r.source);
+    << r.max_compression << ',' << r.certified_digits << ',' << to_string(r.source);
   return s.str();
 }
 
@@ -102,7 +105,7 @@ inline std::string csv_line(const table_row& r) {
 inline std::string csv_line(const threshold_row& r) {
   std::ostringstream s;
   s << r.index << ',' << r.law << ',' << r.alpha << ',' << r.beta << ',' << to_string(r.solve_for) << ','
-    << r.gamma << ',' << r.g << ',' << r.rebound_at << ',' << r.stick_at << ',' << r.digits << ','
+    << r.gamma << ',' << r.g << ',' << r.rebound_at << ',' << r.stick_at << ',' << r.certified_digits << ','
     << to_string(r.source);
   return s.str();
 }

@@ -26,7 +26,7 @@ template <class Real>
 struct threshold_result {
   Real rebound_at = 0;  ///< a certified rebound point, below the threshold
   Real stick_at = 0;    ///< a certified sticking point, above it
-  int digits = 0;       ///< significant digits of the threshold given by the bracket
+  int certified_digits = 0;  ///< significant digits of the threshold given by the bracket
   row_source source = row_source::exact;
   int evaluations = 0;  ///< certified solves used
   /// The threshold estimate (midpoint of the bracket).
@@ -117,7 +117,7 @@ threshold_result<Real> sticking_threshold(const contact_law& law, threshold_vari
     if (!narrowed) break;  // too close to the threshold to certify: stop with fewer digits
   }
   r.rebound_at = lo, r.stick_at = hi;
-  r.digits = bracket_digits(digits_wanted);
+  r.certified_digits = bracket_digits(digits_wanted);
   return r;
 }
 
@@ -130,21 +130,21 @@ inline threshold_row compute_threshold_row(const threshold_point& p, int digits_
     const bool for_g = p.solve_for == threshold_variable::g;
     const Real fixed = parse_real<Real>(p.fixed, for_g ? "gamma" : "g");
     const threshold_result<Real> t = sticking_threshold(p.law, p.solve_for, fixed, digits_wanted, settings);
-    if (t.digits < 1 || t.digits < settings.min_digits)
+    if (t.certified_digits < 1 || t.certified_digits < settings.min_digits)
       throw certification_error("row " + std::to_string(p.index) + " (" + p.law.describe() + ", " +
                                 (for_g ? "gamma = " : "g = ") + p.fixed + "): threshold certified to " +
-                                std::to_string(t.digits) + " digits only (min_digits = " +
+                                std::to_string(t.certified_digits) + " digits only (min_digits = " +
                                 std::to_string(settings.min_digits) + ")");
     threshold_row row;
     row.index = p.index;
     row.law = p.law.name, row.alpha = p.law.alpha.to_string(), row.beta = p.law.beta.to_string();
     row.solve_for = p.solve_for;
-    const std::string value = rounded_decimal(t.value(), t.digits);
+    const std::string value = rounded_decimal(t.value(), t.certified_digits);
     row.gamma = for_g ? p.fixed : value;
     row.g = for_g ? value : p.fixed;
     row.rebound_at = rounded_decimal(t.rebound_at, roundtrip_digits<Real>());
     row.stick_at = rounded_decimal(t.stick_at, roundtrip_digits<Real>());
-    row.digits = t.digits;
+    row.certified_digits = t.certified_digits;
     row.source = t.source;
     return row;
   });

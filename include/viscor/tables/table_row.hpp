@@ -50,7 +50,7 @@ struct point_result {
   impact_outcome outcome = impact_outcome::rebound;
   Real e = 0, one_minus_e = 1;
   std::optional<Real> contact_time, max_compression;
-  int digits = 0;                 ///< certified significant digits of e, 1 - e, T_f, u_max
+  int certified_digits = 0;       ///< certified significant digits of e, 1 - e, T_f, u_max
   bool outcome_certified = true;  ///< false: the methods disagree on rebound versus stick
   row_source source = row_source::exact;
 };
@@ -83,7 +83,7 @@ point_result<Real> exact_point(const contact_law& law, const Real& gamma, const 
   const int cap = std::min(working_digits, decimal_digits<Real>());
   const closed_form_digits checked = check_closed_form(law, gamma, g, *x, cap, inputs);
   r.outcome_certified = checked.outcome_agrees;
-  r.digits = std::max(0, std::min(checked.least() - 1, cap - 2));
+  r.certified_digits = std::max(0, std::min(checked.least() - 1, cap - 2));
   r.source = row_source::exact;
   return r;
 }
@@ -96,7 +96,7 @@ point_result<Real> certified_point(const contact_law& law, const Real& gamma, co
   r.outcome = c.outcome;
   r.e = c.e, r.one_minus_e = c.one_minus_e;
   r.contact_time = c.contact_time, r.max_compression = c.max_compression;
-  r.digits = c.digits;
+  r.certified_digits = c.certified_digits;
   r.outcome_certified = c.outcome_certified;
   r.source = row_source::certified;
   return r;
@@ -136,9 +136,9 @@ table_row make_row(const grid_point& p, const point_result<Real>& r) {
   row.law = p.law.name, row.alpha = p.law.alpha.to_string(), row.beta = p.law.beta.to_string();
   row.gamma = p.gamma, row.g = p.g;
   row.outcome = r.outcome;
-  row.digits = r.digits;
+  row.certified_digits = r.certified_digits;
   row.source = r.source;
-  const int d = r.digits;
+  const int d = r.certified_digits;
   if (r.outcome == impact_outcome::stick) {
     row.e = "0", row.one_minus_e = "1";  // certified outcome: e = 0 exactly
   } else if (r.one_minus_e == 0) {
@@ -166,8 +166,8 @@ inline table_row compute_row(const grid_point& p, const table_settings& settings
                               ", g = " + p.g + ")";
     if (!r.outcome_certified)
       throw certification_error(where + ": the methods disagree on the outcome (rebound or stick)");
-    if (r.outcome == impact_outcome::rebound && (r.digits < 1 || r.digits < settings.min_digits))
-      throw certification_error(where + ": certified to " + std::to_string(r.digits) +
+    if (r.outcome == impact_outcome::rebound && (r.certified_digits < 1 || r.certified_digits < settings.min_digits))
+      throw certification_error(where + ": certified to " + std::to_string(r.certified_digits) +
                                 " digits only (min_digits = " + std::to_string(settings.min_digits) +
                                 "); raise the working digits");
     return make_row(p, r);
