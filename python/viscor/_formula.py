@@ -20,6 +20,17 @@ class FormulaCheck(Result):
     def __str__(self):
         return self._fields["text"]
 
+    def column(self, name):
+        """Field `name` of every cell as a NumPy array: float64 for numbers (NaN where
+        absent), bool for `pass`, str for edges given as text (a pandas-free table)."""
+        import numpy as np
+        values = [c.get(name) for c in self._fields["cells"]]
+        if name == "pass":
+            return np.array(values, dtype=bool)
+        if name in ("gamma_lo", "gamma_hi", "g_lo", "g_hi", "outcome"):
+            return np.array(values, dtype=str)
+        return np.array([float(v) if v not in (None, "") else float("nan") for v in values], dtype=np.float64)
+
     def plot(self, path=None, ax=None):
         """The per-cell largest |de| as a map over (gamma, g), failing cells outlined
         in red; saved to `path` when given. Returns the matplotlib Axes."""

@@ -32,6 +32,10 @@ class Compare(unittest.TestCase):
         self.assertTrue(check, str(check))
         self.assertGreater(len(check.cells), 10)
         self.assertLessEqual(float(check.overall.max_abs_e), 1e-9)
+        worst = check.column("max_abs_e")
+        self.assertEqual(worst.shape, (len(check.cells),))
+        self.assertEqual(worst.max(), float(check.overall.max_abs_e))
+        self.assertTrue(check.column("pass").all())
 
     def test_fail_names_the_worst_point(self):
         check = viscor.compare(wrong_in_one_cell, "kuwabara_kono", 1e-9, region=(0, 1e-3, 0, 10))
