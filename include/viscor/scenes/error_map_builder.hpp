@@ -204,7 +204,7 @@ inline std::vector<reference_point> reference_by_solve(const contact_law& law,
       const Real gm = parse_real<Real>(gamma, "gamma");
       for (const auto& g : g_nodes) {
         const impact_result<Real> r = solve_impact(law, gm, parse_real<Real>(g, "g"));
-        out.push_back({gamma, g, to_decimal_string(r.e), r.outcome});
+        out.push_back({gamma, g, to_decimal_string(r.e), r.outcome, to_decimal_string(r.one_minus_e)});
       }
     }
     return out;
