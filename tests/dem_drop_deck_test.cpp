@@ -92,6 +92,18 @@ TEST(DemDropDeck, YadeViscoelasticRunsAsWritten) {
                                  " --k 1e6 --radius 1e-3 --density 2500 --target-e 0.8 --v0 0.5 --gravity 9.81");
 }
 
+// A glass bead on a steel plate (a wall of its own material): the decks run as written.
+const std::string steel_plate = glass + " --wall-youngs-modulus 200e9 --wall-poisson-ratio 0.3";
+TEST(DemDropDeck, LammpsTsujiOnSteelPlateRunsAsWritten) {
+  expect_deck_rebounds_at_target("lmp", "lammps --damping tsuji", "-in", steel_plate);
+}
+TEST(DemDropDeck, LiggghtsHertzOnSteelPlateRunsAsWritten) {
+  expect_deck_rebounds_at_target("liggghts", "liggghts --damping hertz", "-in", steel_plate);
+}
+TEST(DemDropDeck, YadeMindlinOnSteelPlateRunsAsWritten) {
+  expect_deck_rebounds_at_target("yade", "yade --damping mindlin", "-n -x", steel_plate);
+}
+
 /// `viscor dem --json` output for the glass bead.
 nlohmann::json dem_json(const std::string& model_args) {
   const auto r = run_cli("dem " + model_args + glass + " --json");

@@ -27,8 +27,17 @@ void setup(CLI::App& app) {
   app.add_option("--damping", q.damping,
                  "damping model: lammps velocity|mass_velocity|viscoelastic|tsuji, liggghts hertz, yade "
                  "mindlin|viscoelastic");
-  app.add_option("--contact", q.contact, "wall (bead on a rigid wall) or pair (two identical beads)")
+  app.add_option("--contact", q.contact,
+                 "wall (bead on a wall: rigid, or of --wall-youngs-modulus and --wall-poisson-ratio) or pair (two "
+                 "beads: alike, or the other of --other-youngs-modulus, --other-poisson-ratio, --other-radius, "
+                 "--other-density)")
       ->capture_default_str();
+  app.add_option("--wall-youngs-modulus", q.wall_youngs_modulus, "a wall of its own material: its Young's modulus, Pa");
+  app.add_option("--wall-poisson-ratio", q.wall_poisson_ratio, "a wall of its own material: its Poisson ratio");
+  app.add_option("--other-youngs-modulus", q.other_youngs_modulus, "--contact pair: the other bead's Young's modulus, Pa");
+  app.add_option("--other-poisson-ratio", q.other_poisson_ratio, "--contact pair: the other bead's Poisson ratio");
+  app.add_option("--other-radius", q.other_radius, "--contact pair: the other bead's radius, m");
+  app.add_option("--other-density", q.other_density, "--contact pair: the other bead's density, kg/m^3");
   app.add_option("--youngs-modulus", q.youngs_modulus, "Young's modulus E of the bead, Pa");
   app.add_option("--poisson-ratio", q.poisson_ratio, "Poisson ratio of the bead");
   app.add_option("--k", q.stiffness,

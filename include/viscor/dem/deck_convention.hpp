@@ -48,17 +48,39 @@ inline constexpr const char* yade_rigid_wall_viscel = "1e30";
 
 /// The Young's modulus to write in the deck for the bead so that the code's
 /// stiffness is the physical k of make_hertz_contact (Poisson ratio unchanged).
-/// LAMMPS' wall reads only the bead's entry (E*_code = E_deck / (2 (1 - nu))), so
-/// a rigid wall needs E_deck = 2 E / (1 + nu); LIGGGHTS' wall is a particle type
-/// of its own, made rigid by liggghts_rigid_wall_modulus.
+/// LAMMPS' wall reads only its own entry (E*_code = E_deck / (2 (1 - nu))), so the
+/// wall entry carries the contact's E*: E_deck = 2 (1 - nu) E* (2 E / (1 + nu) on a
+/// rigid wall); LIGGGHTS' wall is a particle type of its own (wall_deck_modulus);
+/// YADE takes R* = R/2 on a wall, so both of its moduli are scaled by sqrt(2).
 template <class Real>
-Real deck_youngs_modulus(const dem_model& model, const bead_material<Real>& bead, contact_kind kind) {
+Real deck_youngs_modulus(const dem_model& model, const bead_material<Real>& bead, const hertz_contact<Real>& contact,
+                         const contact_partner<Real>& partner = {}) {
   using std::sqrt;
-  if (kind == contact_kind::wall && model.code == dem_code::lammps)
-    return Real(2 * bead.youngs_modulus / (1 + bead.poisson_ratio));
-  if (kind == contact_kind::wall && model.code == dem_code::yade)  // R* = R/2 on a YADE wall
+  if (contact.kind == contact_kind::wall && model.code == dem_code::lammps)
+    return partner.wall ? Real(2 * (1 - bead.poisson_ratio) * contact.effective_modulus)
+                        : Real(2 * bead.youngs_modulus / (1 + bead.poisson_ratio));
+  if (contact.kind == contact_kind::wall && model.code == dem_code::yade)  // R* = R/2 on a YADE wall
     return Real(sqrt(Real(2)) * bead.youngs_modulus);
   return bead.youngs_modulus;
+}
+
+/// LIGGGHTS' wall type and YADE's wall material: the wall's own modulus (times
+/// sqrt(2) in YADE, as the bead's), or a modulus that makes the wall rigid.
+template <class Real>
+Real wall_deck_modulus(const dem_model& model, const contact_partner<Real>& partner) {
+  using std::sqrt;
+  if (!partner.wall) return parse_real<Real>(liggghts_rigid_wall_modulus, "wall youngs_modulus");
+  return model.code == dem_code::yade ? Real(sqrt(Real(2)) * partner.wall->youngs_modulus)
+                                      : partner.wall->youngs_modulus;
+}
+
+/// LAMMPS 29 Sep 2021 mixes hertz/material entries of two types wrongly (its
+/// mix_stiffnessE reads the Poisson ratio as a shear modulus: measured, a force of
+/// 204 N instead of 0.0067 N), so two bead types need an explicit cross entry
+/// `pair_coeff 1 2`, which the code combines with itself: E_deck = 2 (1 - nu^2) E*.
+template <class Real>
+Real lammps_cross_modulus(const hertz_contact<Real>& contact, const Real& nu) {
+  return Real(2 * (1 - nu * nu) * contact.effective_modulus);
 }
 
 /// The code's own E* for a deck modulus (and, for a LIGGGHTS or YADE wall, the wall

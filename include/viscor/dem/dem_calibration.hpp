@@ -31,6 +31,7 @@ template <class Real>
 struct dem_impact {
   bead_material<Real> bead;
   contact_kind kind = contact_kind::wall;
+  contact_partner<Real> partner;  ///< the wall's material or the other bead (none: rigid wall, like bead)
   Real v0 = 0;       ///< impact (approach) speed, m/s
   Real gravity = 0;  ///< m/s^2 towards the wall (drops out for a pair)
   Real force = 0;    ///< N pressing the bead on the wall (or the pair together)
@@ -41,7 +42,11 @@ struct dem_impact {
 /// linear-spring model the user's stiffness with the bead's mass (E and nu unused).
 template <class Real>
 hertz_contact<Real> model_contact(const dem_model& model, const dem_impact<Real>& impact) {
-  if (!takes_linear_stiffness(model)) return make_hertz_contact(impact.bead, impact.kind);
+  if (!takes_linear_stiffness(model)) return make_hertz_contact(impact.bead, impact.kind, impact.partner);
+  if (impact.partner.wall || impact.partner.other)
+    throw invalid_parameter(std::string(model.code_name) + " " + std::string(model.damping_name) + " is a linear "
+                            "spring of the contact's stiffness --k: a wall material or another bead does not enter it "
+                            "(give the contact's kn as --k)");
   require_positive(impact.stiffness, "k");
   require_positive(impact.bead.radius, "radius");
   require_positive(impact.bead.density, "density");
@@ -126,7 +131,10 @@ calibration_result<Real> calibrate_clamped_gamma(const contact_law& law, const R
 template <class Real>
 struct dem_deck {
   Real youngs_modulus = 0;  ///< deck E (or Y) of the bead
-  std::optional<Real> wall_youngs_modulus;  ///< LIGGGHTS wall: the wall type's Y (rigid)
+  std::optional<Real> wall_youngs_modulus;  ///< LIGGGHTS wall type's Y, YADE wall material's young (1e30: rigid)
+  std::optional<Real> wall_poisson_ratio;   ///< the wall's nu, when it has a material
+  std::optional<Real> other_youngs_modulus, other_poisson_ratio;  ///< the pair's other bead (type 2, second material)
+  std::optional<Real> cross_youngs_modulus;  ///< LAMMPS, two bead types: the explicit pair_coeff 1 2 modulus
   Real poisson_ratio = 0;   ///< deck nu
   Real damping = 0;         ///< deck damping entry (a coefficient, or an e for restitution models)
   Real damping_number = 0;  ///< D, what the code multiplies the damping force by
@@ -183,10 +191,17 @@ dem_deck<Real> dem_deck_for(const dem_model& model, const dem_impact<Real>& impa
     d.builtin_e = e_for_deck(model, impact, deck_cn, options.solve).e;
     return d;
   }
-  d.youngs_modulus = deck_youngs_modulus(model, impact.bead, impact.kind);
+  d.youngs_modulus = deck_youngs_modulus(model, impact.bead, d.contact, impact.partner);
   d.poisson_ratio = impact.bead.poisson_ratio;
-  if (model.code != dem_code::lammps && impact.kind == contact_kind::wall)
-    d.wall_youngs_modulus = parse_real<Real>(liggghts_rigid_wall_modulus, "wall youngs_modulus");
+  if (model.code != dem_code::lammps && impact.kind == contact_kind::wall) {
+    d.wall_youngs_modulus = wall_deck_modulus(model, impact.partner);
+    if (impact.partner.wall) d.wall_poisson_ratio = impact.partner.wall->poisson_ratio;
+  }
+  if (impact.partner.other) {  // every code reads the other bead's own material; LAMMPS also a cross entry
+    d.other_youngs_modulus = impact.partner.other->youngs_modulus;
+    d.other_poisson_ratio = impact.partner.other->poisson_ratio;
+    if (model.code == dem_code::lammps) d.cross_youngs_modulus = lammps_cross_modulus(d.contact, d.poisson_ratio);
+  }
   if (model.deck_kind == deck_damping_kind::coefficient_of_restitution)
     d.builtin_e = e_for_deck(model, impact, target_e, options.solve).e;
   if (model.damping == damping_model::mindlin)  // the deck's `en` instead of betan: Thornton's fit

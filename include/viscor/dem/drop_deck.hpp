@@ -158,7 +158,9 @@ inline std::string lammps_drop_deck(const dem_model& model, const deck_strings& 
   s += "set atom 1 diameter " + in.diameter + "\nset atom 1 density " + in.density + "\n";
   s += "velocity all set 0 0 -" + in.v0 + "\n";
   s += "pair_style none\nneighbor " + R + " bin\n";
-  s += "# the bead-wall contact; E_deck = 2E/(1+nu) because this LAMMPS' wall reads E_deck/(2(1-nu))\n";
+  s += d.wall_material ? "# the bead-wall contact; E_deck = 2(1-nu) E* (E* of bead and wall) because this LAMMPS' "
+                              "wall reads E_deck/(2(1-nu))\n"
+                            : "# the bead-wall contact; E_deck = 2E/(1+nu) because this LAMMPS' wall reads E_deck/(2(1-nu))\n";
   s += "fix wall all wall/gran granular hertz/material " + d.youngs_modulus + " " + d.damping + " " + d.poisson_ratio +
        " damping " + std::string(model.damping_name) + " tangential linear_nohistory 0 0 zplane 0.0 NULL\n";
   s += "fix gravity all gravity " + in.gravity + " vector 0 0 -1\n";
@@ -174,10 +176,11 @@ inline std::string liggghts_drop_deck(const dem_model& model, const deck_strings
   s += "units si\nhard_particles yes\n";
   s += "region box block " + box_region(in) + " units box\n";
   s += "create_box 2 box\nneighbor " + R + " bin\nneigh_modify delay 0\n";
-  s += "# type 1: the bead, type 2: the rigid wall\n";
+  s += std::string("# type 1: the bead, type 2: the ") + (d.wall_material ? "wall's material\n" : "rigid wall\n");
   s += "fix m1 all property/global youngsModulus peratomtype " + d.youngs_modulus + " " +
        d.wall_youngs_modulus.value_or(d.youngs_modulus) + "\n";
-  s += "fix m2 all property/global poissonsRatio peratomtype " + d.poisson_ratio + " " + d.poisson_ratio + "\n";
+  s += "fix m2 all property/global poissonsRatio peratomtype " + d.poisson_ratio + " " +
+       d.wall_poisson_ratio.value_or(d.poisson_ratio) + "\n";
   s += "# only the bead-wall entries (1,2) and (2,1) act in this drop\n";
   s += "fix m3 all property/global coefficientRestitution peratomtypepair 2 " + e + " " + e + " " + e + " " + e + "\n";
   s += "fix m4 all property/global coefficientFriction peratomtypepair 2 0 0 0 0\n";
@@ -201,10 +204,13 @@ inline std::string yade_materials(const dem_model& model, const deck_strings& d,
            ", ks=0, cs=0, density=" + rho + ", frictionAngle=0))\n" +
            "physics, law = Ip2_ViscElMat_ViscElMat_ViscElPhys(), Law2_ScGeom_ViscElPhys_Basic()\n";
   }
-  return "# YADE takes R* = R/2 on a wall, hence young = sqrt(2) E for the bead\n"
+  return std::string(d.wall_material ? "# YADE takes R* = R/2 on a wall, hence young = sqrt(2) E for the bead "
+                                            "and for the wall's material\n"
+                                          : "# YADE takes R* = R/2 on a wall, hence young = sqrt(2) E for the bead\n") +
          "bead = O.materials.append(FrictMat(young=" + d.youngs_modulus + ", poisson=" + d.poisson_ratio +
          ", density=" + rho + ", frictionAngle=0))\n" + "rigid = O.materials.append(FrictMat(young=" +
-         d.wall_youngs_modulus.value_or(d.youngs_modulus) + ", poisson=" + d.poisson_ratio + ", density=" + rho +
+         d.wall_youngs_modulus.value_or(d.youngs_modulus) + ", poisson=" +
+         d.wall_poisson_ratio.value_or(d.poisson_ratio) + ", density=" + rho +
          ", frictionAngle=0))\n" + "physics, law = Ip2_FrictMat_FrictMat_MindlinPhys(betan=" + d.damping +
          "), Law2_ScGeom_MindlinPhys_Mindlin()\n";
 }

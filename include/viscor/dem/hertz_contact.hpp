@@ -1,18 +1,19 @@
 // The physical contact a DEM code should simulate: a sphere of Young's modulus E,
-// Poisson ratio nu, radius R and density rho hitting a rigid flat wall, or an
-// identical sphere. Hertz theory gives the elastic force k delta^(3/2) with
-//   k = (4/3) E* sqrt(R*),
-//   wall: E* = E / (1 - nu^2),        R* = R,     m* = m
-//   pair: E* = E / (2 (1 - nu^2)),    R* = R / 2, m* = m / 2
+// Poisson ratio nu, radius R and density rho hitting a flat wall (rigid, or of a
+// material of its own), or a second sphere (of the same material and size, or of
+// its own). Hertz theory (core/elastic_contact.hpp) gives the elastic force
+// k delta^(3/2) with k = (4/3) E* sqrt(R*):
+//   wall:  1/E* = (1 - nu^2)/E + (1 - nu_w^2)/E_w (rigid: no second term), R* = R, m* = m
+//   pair:  1/E* = (1 - nu^2)/E + (1 - nu_2^2)/E_2, 1/R* = 1/R + 1/R_2, 1/m* = 1/m + 1/m_2
 // (m = (4/3) pi R^3 rho). For a pair, delta is the overlap of the two spheres and
 // the motion is that of the relative coordinate with the reduced mass m*.
 #pragma once
 
+#include <viscor/core/elastic_contact.hpp>
 #include <viscor/core/exceptions.hpp>
 #include <viscor/core/parameters.hpp>
 
-#include <boost/math/constants/constants.hpp>
-
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -28,7 +29,7 @@ inline std::string_view to_string(contact_kind kind) { return kind == contact_ki
 inline contact_kind parse_contact_kind(const std::string& text) {
   if (text == "wall") return contact_kind::wall;
   if (text == "pair") return contact_kind::pair;
-  throw invalid_parameter("unknown contact '" + text + "': expected wall (sphere on a rigid wall) or pair (two identical spheres)");
+  throw invalid_parameter("unknown contact '" + text + "': expected wall (sphere on a wall) or pair (two spheres)");
 }
 
 /// The bead's material and size in SI units.
@@ -39,19 +40,39 @@ struct bead_material {
   Real radius = 0;          ///< R, m
   Real density = 0;         ///< rho, kg/m^3
 
-  /// Throws invalid_parameter naming the first invalid field.
-  void validate() const {
-    require_positive(youngs_modulus, "youngs_modulus");
-    require_finite(poisson_ratio, "poisson_ratio");
+  /// Throws invalid_parameter naming the first invalid field (after `prefix`: "other_" for the pair's other bead).
+  void validate(const std::string& prefix = "") const {
+    require_positive(youngs_modulus, prefix + "youngs_modulus");
+    require_finite(poisson_ratio, prefix + "poisson_ratio");
     if (!(poisson_ratio > -1 && poisson_ratio <= Real(1) / 2))
-      throw invalid_parameter("parameter poisson_ratio must be in (-1, 0.5], got " + to_decimal_string(poisson_ratio));
-    require_positive(radius, "radius");
-    require_positive(density, "density");
+      throw invalid_parameter("parameter " + prefix + "poisson_ratio must be in (-1, 0.5], got " +
+                              to_decimal_string(poisson_ratio));
+    require_positive(radius, prefix + "radius");
+    require_positive(density, prefix + "density");
   }
 
   /// The bead's mass 4/3 pi R^3 rho, kg.
-  Real mass() const {
-    return 4 * boost::math::constants::pi<Real>() * radius * radius * radius * density / 3;
+  Real mass() const { return sphere_mass(density, radius); }
+
+  /// Its elastic constants.
+  elastic_material<Real> elastic() const { return {youngs_modulus, poisson_ratio}; }
+};
+
+/// What the bead meets besides itself: the wall's material on a wall (none: rigid),
+/// the other bead in a pair (none: a bead like this one).
+template <class Real>
+struct contact_partner {
+  std::optional<elastic_material<Real>> wall;  ///< a wall of this material; nullopt: rigid
+  std::optional<bead_material<Real>> other;    ///< the pair's other bead; nullopt: identical to the bead
+
+  /// Throws invalid_parameter when a partner does not fit `kind` (the other bead on a wall, a wall in a pair).
+  void validate(contact_kind kind) const {
+    if (kind == contact_kind::wall && other)
+      throw invalid_parameter("the other bead (--other-youngs-modulus, ...) belongs to --contact pair, not to a wall");
+    if (kind == contact_kind::pair && wall)
+      throw invalid_parameter("a wall material (--wall-youngs-modulus, ...) belongs to --contact wall, not to a pair");
+    if (wall) wall->validate("wall");
+    if (other) other->validate("other_");
   }
 };
 
@@ -67,20 +88,28 @@ struct hertz_contact {
   Real stiffness = 0;          ///< k = (4/3) E* sqrt(R*), N/m^(3/2)
 };
 
-/// The Hertz contact of a bead (validated) with a rigid wall or an identical bead: E*, R*, m* and k.
+/// The Hertz contact of a bead (validated) with a wall or a second bead: E*, R*, m* and k.
 template <class Real>
-hertz_contact<Real> make_hertz_contact(const bead_material<Real>& bead, contact_kind kind) {
-  using std::sqrt;
+hertz_contact<Real> make_hertz_contact(const bead_material<Real>& bead, contact_kind kind,
+                                       const contact_partner<Real>& partner = {}) {
   bead.validate();
+  partner.validate(kind);
+  const bool wall = kind == contact_kind::wall;
   hertz_contact<Real> c;
   c.kind = kind;
   c.bead_mass = bead.mass();
-  const Real plane_strain_modulus = bead.youngs_modulus / (1 - bead.poisson_ratio * bead.poisson_ratio);
-  const bool wall = kind == contact_kind::wall;
-  c.effective_modulus = wall ? plane_strain_modulus : Real(plane_strain_modulus / 2);
-  c.effective_radius = wall ? bead.radius : Real(bead.radius / 2);
-  c.effective_mass = wall ? c.bead_mass : Real(c.bead_mass / 2);
-  c.stiffness = 4 * c.effective_modulus * sqrt(c.effective_radius) / 3;
+  if (partner.wall || partner.other) {
+    const std::optional<bead_material<Real>>& other = partner.other;
+    c.effective_modulus = effective_modulus(bead.elastic(), wall ? partner.wall : std::optional(other->elastic()));
+    c.effective_radius = effective_radius(bead.radius, wall ? std::nullopt : std::optional(other->radius));
+    c.effective_mass = reduced_mass(c.bead_mass, wall ? std::nullopt : std::optional(other->mass()));
+  } else {  // a rigid wall or a bead like this one: the same values with fewer roundings
+    const Real plane_strain_modulus = bead.youngs_modulus / (1 - bead.poisson_ratio * bead.poisson_ratio);
+    c.effective_modulus = wall ? plane_strain_modulus : Real(plane_strain_modulus / 2);
+    c.effective_radius = wall ? bead.radius : Real(bead.radius / 2);
+    c.effective_mass = wall ? c.bead_mass : Real(c.bead_mass / 2);
+  }
+  c.stiffness = hertz_stiffness(c.effective_modulus, c.effective_radius);
   const std::string from = "radius = " + to_decimal_string(bead.radius) + ", density = " +
                            to_decimal_string(bead.density) + ", youngs_modulus = " +
                            to_decimal_string(bead.youngs_modulus);

@@ -35,6 +35,9 @@ struct dem_request {
   std::string damping;           ///< the code's damping model (dem/dem_models.hpp)
   std::string contact = "wall";  ///< wall or pair
   std::string youngs_modulus, poisson_ratio, radius, density;
+  std::string wall_youngs_modulus, wall_poisson_ratio;  ///< a wall of its own material ("": rigid)
+  /// A pair of two materials: the other bead ("": a bead like the first).
+  std::string other_youngs_modulus, other_poisson_ratio, other_radius, other_density;
   std::string stiffness;         ///< yade viscoelastic: the linear spring's kn, N/m
   std::string target_e;          ///< forward: the measured e
   std::string deck_damping;      ///< reverse: the deck's damping entry
@@ -77,10 +80,63 @@ struct dem_job : dem_request {
       p["youngs_modulus"] = youngs_modulus, p["poisson_ratio"] = poisson_ratio;
     p["radius"] = radius;
     p["density"] = density;
+    for (const auto& [name, value] : partner_inputs())
+      if (!value->empty()) p[name] = *value;
     if (!v0.empty()) p["v0"] = v0;
     p["gravity"] = gravity;
     p["force"] = force;
     return p;
+  }
+
+  /// The wall's and the other bead's inputs, under their field names.
+  std::vector<std::pair<std::string, const std::string*>> partner_inputs() const {
+    return {{"wall_youngs_modulus", &wall_youngs_modulus}, {"wall_poisson_ratio", &wall_poisson_ratio},
+            {"other_youngs_modulus", &other_youngs_modulus}, {"other_poisson_ratio", &other_poisson_ratio},
+            {"other_radius", &other_radius}, {"other_density", &other_density}};
+  }
+
+  /// The wall's material or the other bead, checked for completeness against the contact.
+  template <class Real>
+  dem::contact_partner<Real> partner(dem::contact_kind kind) const {
+    dem::contact_partner<Real> p;
+    const bool wall_given = !wall_youngs_modulus.empty() || !wall_poisson_ratio.empty();
+    const bool other_given = !other_youngs_modulus.empty() || !other_poisson_ratio.empty() || !other_radius.empty() ||
+                             !other_density.empty();
+    if (wall_given && kind != dem::contact_kind::wall)
+      throw invalid_parameter("--wall-youngs-modulus and --wall-poisson-ratio describe a wall: they need --contact "
+                              "wall, not --contact " + contact);
+    if (other_given && kind != dem::contact_kind::pair)
+      throw invalid_parameter("--other-youngs-modulus, --other-poisson-ratio, --other-radius and --other-density "
+                              "describe the second bead of --contact pair, not of --contact " + contact);
+    if (wall_given) {
+      require(wall_youngs_modulus, "--wall-youngs-modulus", "the wall's Young's modulus, Pa; neither: a rigid wall");
+      require(wall_poisson_ratio, "--wall-poisson-ratio", "the wall's Poisson ratio");
+      p.wall = elastic_material<Real>{parse_real<Real>(wall_youngs_modulus, "wall_youngs_modulus"),
+                                      parse_real<Real>(wall_poisson_ratio, "wall_poisson_ratio")};
+    }
+    if (other_given) {
+      const char* what = "the other bead's material: give all four, or none for a bead like the first";
+      require(other_youngs_modulus, "--other-youngs-modulus", what);
+      require(other_poisson_ratio, "--other-poisson-ratio", what);
+      require(other_radius, "--other-radius", what);
+      require(other_density, "--other-density", what);
+      p.other = dem::bead_material<Real>{parse_real<Real>(other_youngs_modulus, "other_youngs_modulus"),
+                                         parse_real<Real>(other_poisson_ratio, "other_poisson_ratio"),
+                                         parse_real<Real>(other_radius, "other_radius"),
+                                         parse_real<Real>(other_density, "other_density")};
+    }
+    return p;
+  }
+
+  /// The readable line for the wall or the other bead, as given.
+  std::string partner_line(dem::contact_kind kind) const {
+    if (kind == dem::contact_kind::wall)
+      return wall_youngs_modulus.empty() ? "wall        rigid\n"
+                                         : "wall        youngs_modulus = " + wall_youngs_modulus +
+                                               " Pa, poisson_ratio = " + wall_poisson_ratio + "\n";
+    if (other_youngs_modulus.empty()) return "other bead  like the first\n";
+    return "other bead  youngs_modulus = " + other_youngs_modulus + " Pa, poisson_ratio = " + other_poisson_ratio +
+           ", radius = " + other_radius + " m, density = " + other_density + " kg/m^3\n";
   }
 
   /// A negative gravity is refused; values far outside their range are warned about (refused under --strict).
@@ -92,6 +148,10 @@ struct dem_job : dem_request {
     check_plausible_unit(physical_quantity::radius, given(radius), "--radius", strict);
     check_plausible_unit(physical_quantity::speed, given(v0), "--v0", strict);
     check_plausible_unit(physical_quantity::gravity, given(gravity), "--gravity", strict);
+    check_plausible_unit(physical_quantity::youngs_modulus, given(wall_youngs_modulus), "--wall-youngs-modulus", strict);
+    check_plausible_unit(physical_quantity::youngs_modulus, given(other_youngs_modulus), "--other-youngs-modulus", strict);
+    check_plausible_unit(physical_quantity::density, given(other_density), "--other-density", strict);
+    check_plausible_unit(physical_quantity::radius, given(other_radius), "--other-radius", strict);
   }
 
   command_output run() const {
@@ -152,6 +212,7 @@ struct dem_job : dem_request {
         impact.bead.validate();
       }
       impact.kind = kind;
+      impact.partner = partner<Real>(kind);
       impact.gravity = parse_real<Real>(gravity, "gravity");
       impact.force = parse_real<Real>(force, "force");
       const auto start = std::chrono::steady_clock::now();
@@ -174,6 +235,7 @@ struct dem_job : dem_request {
       text << "code        " << model.version << "\n"
            << "model       " << code << " damping " << damping << " on a " << contact << " (viscor law "
            << model.law_name << ")\n";
+      text << partner_line(kind);
       if (linear)
         text << "contact     linear spring k = " << number(c.stiffness) << " N/m, m* = " << number(c.effective_mass)
              << " kg\n";
@@ -197,29 +259,22 @@ struct dem_job : dem_request {
     const Real target = parse_real<Real>(target_e, "target_e");
     calibration_options<Real> options;
     const dem::dem_deck<Real> d = dem::dem_deck_for(model, impact, target, options);
-    dem::deck_strings s;
-    s.damping = to_decimal_string(d.damping);
+    const dem::deck_strings s = deck_strings_for(model, impact, d, target);
     json deck;
     if (d.stiffness) {  // YADE visco-elastic: the bead material's kn, cn; a rigid wall material
-      s.stiffness = to_decimal_string(*d.stiffness);
-      if (impact.kind == dem::contact_kind::wall) s.wall_youngs_modulus = dem::yade_rigid_wall_viscel;
       deck["kn"] = s.stiffness;
       deck["cn"] = s.damping;
       if (s.wall_youngs_modulus) deck["wall_kn"] = deck["wall_cn"] = *s.wall_youngs_modulus;
     } else {
-      s.youngs_modulus = to_decimal_string(d.youngs_modulus);
-      s.poisson_ratio = to_decimal_string(d.poisson_ratio);
-      if (d.wall_youngs_modulus) s.wall_youngs_modulus = dem::liggghts_rigid_wall_modulus;
       deck["youngs_modulus"] = s.youngs_modulus;
       deck["poisson_ratio"] = s.poisson_ratio;
-      if (s.wall_youngs_modulus) deck["wall_youngs_modulus"] = *s.wall_youngs_modulus;
-      if (reads_bead_bead_separately(model, impact.kind)) {
-        const dem::dem_deck<Real> bead_bead = bead_bead_deck(model, impact, target);
-        s.bead_bead_youngs_modulus = to_decimal_string(bead_bead.youngs_modulus);
-        s.bead_bead_damping = to_decimal_string(bead_bead.damping);
-        deck["bead_bead_youngs_modulus"] = *s.bead_bead_youngs_modulus;
-        deck["bead_bead_damping"] = *s.bead_bead_damping;
-      }
+      const std::pair<const char*, const std::optional<std::string>*> optional_entries[] = {
+          {"wall_youngs_modulus", &s.wall_youngs_modulus}, {"wall_poisson_ratio", &s.wall_poisson_ratio},
+          {"other_youngs_modulus", &s.other_youngs_modulus}, {"other_poisson_ratio", &s.other_poisson_ratio},
+          {"cross_youngs_modulus", &s.cross_youngs_modulus}, {"bead_bead_youngs_modulus", &s.bead_bead_youngs_modulus},
+          {"bead_bead_damping", &s.bead_bead_damping}, {"other_other_damping", &s.other_other_damping}};
+      for (const auto& [name, value] : optional_entries)
+        if (*value) deck[name] = **value;
     }
     deck["damping"] = s.damping;
     deck["damping_kind"] = model.deck_kind == dem::deck_damping_kind::coefficient ? "coefficient"
@@ -244,10 +299,22 @@ struct dem_job : dem_request {
     } else {
       text << "youngs_modulus = " << s.youngs_modulus << ", poisson_ratio = " << s.poisson_ratio
            << ", damping = " << s.damping << "\n";
-      if (s.wall_youngs_modulus) text << "            wall type youngs_modulus = " << *s.wall_youngs_modulus << " (rigid)\n";
+      if (s.wall_youngs_modulus)
+        text << "            wall " << (model.code == dem::dem_code::yade ? "material young" : "type youngs_modulus")
+             << " = " << *s.wall_youngs_modulus
+             << (s.wall_material ? ", poisson_ratio = " + *s.wall_poisson_ratio + "\n" : std::string(" (rigid)\n"));
+      if (s.other_youngs_modulus)
+        text << "            other bead youngs_modulus = " << *s.other_youngs_modulus << ", poisson_ratio = "
+             << *s.other_poisson_ratio << "\n";
+      if (s.cross_youngs_modulus)
+        text << "            cross entry (1,2) youngs_modulus = " << *s.cross_youngs_modulus
+             << " (LAMMPS does not mix hertz/material right)\n";
       if (s.bead_bead_damping)
-        text << "            bead-bead (two beads, same e and v0, no load): youngs_modulus = "
-             << *s.bead_bead_youngs_modulus << ", damping = " << *s.bead_bead_damping << "\n";
+        text << "            bead-bead (two like beads, same e and v0, no load): youngs_modulus = "
+             << s.bead_bead_youngs_modulus.value_or(s.youngs_modulus) << ", damping = " << *s.bead_bead_damping << "\n";
+      if (s.other_other_damping)
+        text << "            other-other (two like beads, same e and v0, no load): damping = " << *s.other_other_damping
+             << "\n";
     }
     if (d.builtin_e) {
       const Real miss = *d.builtin_e - target;
@@ -268,8 +335,9 @@ struct dem_job : dem_request {
            << " % of 1 - e)\n";
     }
     std::string snippet = dem::deck_snippet(model, impact.kind, s);
-    if (model.code == dem::dem_code::yade)  // the YADE script names the bead's size, density, speed and the load
-      for (const auto& [name, value] : {std::pair<std::string, std::string>{"DENSITY", density}, {"RADIUS", radius},
+    if (model.code == dem::dem_code::yade)  // the YADE script names the beads' sizes, densities, speed and the load
+      for (const auto& [name, value] : {std::pair<std::string, std::string>{"OTHER_DENSITY", other_density},
+                                        {"OTHER_RADIUS", other_radius}, {"DENSITY", density}, {"RADIUS", radius},
                                         {"GRAVITY", gravity}, {"V0", v0}})
         for (std::size_t at = snippet.find(name); at != std::string::npos; at = snippet.find(name, at + value.size()))
           snippet.replace(at, name.size(), value);
@@ -291,18 +359,54 @@ struct dem_job : dem_request {
     }
   }
 
-  /// LAMMPS and LIGGGHTS read the bead-bead entries apart from the wall's (pair_coeff, type pair (1,1)).
-  static bool reads_bead_bead_separately(const dem::dem_model& model, dem::contact_kind kind) {
-    return kind == dem::contact_kind::wall && model.code != dem::dem_code::yade;
+  /// LAMMPS and LIGGGHTS read the like-bead entries apart from the contact's (pair_coeff, type pairs (1,1), (2,2))
+  /// on a wall and for two bead types.
+  template <class Real>
+  static bool reads_like_beads_separately(const dem::dem_model& model, const dem::dem_impact<Real>& impact) {
+    return model.code != dem::dem_code::yade && (impact.kind == dem::contact_kind::wall || impact.partner.other);
   }
 
-  /// The deck of two beads at the same e and approach speed without load (gravity drops out of a pair).
+  /// The deck of two beads like `bead` at the same e and approach speed without load (gravity drops out of a pair).
   template <class Real>
-  static dem::dem_deck<Real> bead_bead_deck(const dem::dem_model& model, const dem::dem_impact<Real>& wall_impact,
-                                            const Real& target) {
-    dem::dem_impact<Real> pair = wall_impact;
-    pair.kind = dem::contact_kind::pair, pair.gravity = 0, pair.force = 0;
+  static dem::dem_deck<Real> like_beads_deck(const dem::dem_model& model, const dem::dem_impact<Real>& impact,
+                                             const dem::bead_material<Real>& bead, const Real& target) {
+    dem::dem_impact<Real> pair = impact;
+    pair.bead = bead;
+    pair.kind = dem::contact_kind::pair, pair.partner = {}, pair.gravity = 0, pair.force = 0;
     return dem::dem_deck_for(model, pair, target);
+  }
+
+  /// The deck values as written into the input (dem::deck_number), with the like-bead entries where the code
+  /// reads them apart.
+  template <class Real>
+  static dem::deck_strings deck_strings_for(const dem::dem_model& model, const dem::dem_impact<Real>& impact,
+                                            const dem::dem_deck<Real>& d, const Real& target) {
+    using dem::deck_number;
+    dem::deck_strings s;
+    s.damping = deck_number(d.damping);
+    s.wall_material = impact.partner.wall.has_value();
+    auto put = [](std::optional<std::string>& to, const std::optional<Real>& value) {
+      if (value) to = deck_number(*value);
+    };
+    if (d.stiffness) {  // YADE visco-elastic: the bead material's kn, cn; a rigid wall material
+      s.stiffness = deck_number(*d.stiffness);
+      if (impact.kind == dem::contact_kind::wall) s.wall_youngs_modulus = dem::yade_rigid_wall_viscel;
+      return s;
+    }
+    s.youngs_modulus = deck_number(d.youngs_modulus);
+    s.poisson_ratio = deck_number(d.poisson_ratio);
+    put(s.wall_youngs_modulus, d.wall_youngs_modulus), put(s.wall_poisson_ratio, d.wall_poisson_ratio);
+    if (s.wall_youngs_modulus && !d.wall_poisson_ratio) s.wall_youngs_modulus = dem::liggghts_rigid_wall_modulus;
+    put(s.other_youngs_modulus, d.other_youngs_modulus), put(s.other_poisson_ratio, d.other_poisson_ratio);
+    put(s.cross_youngs_modulus, d.cross_youngs_modulus);
+    if (reads_like_beads_separately(model, impact)) {
+      const dem::dem_deck<Real> like = like_beads_deck(model, impact, impact.bead, target);
+      if (impact.kind == dem::contact_kind::wall) s.bead_bead_youngs_modulus = deck_number(like.youngs_modulus);
+      s.bead_bead_damping = deck_number(like.damping);
+      if (impact.partner.other)
+        s.other_other_damping = deck_number(like_beads_deck(model, impact, *impact.partner.other, target).damping);
+    }
+    return s;
   }
 
   template <class Real>

@@ -22,6 +22,7 @@
 
 #include <viscor/scenes/calibration.hpp>
 #include <viscor/core/contact_law.hpp>
+#include <viscor/core/elastic_contact.hpp>
 #include <viscor/scenes/evaluate.hpp>
 #include <viscor/core/exceptions.hpp>
 #include <viscor/core/parameters.hpp>
@@ -37,43 +38,6 @@
 #include <vector>
 
 namespace viscor {
-
-/// Elastic constants of a body: Young's modulus E > 0 (Pa), Poisson ratio -1 < nu < 1/2.
-template <class Real>
-struct elastic_material {
-  Real youngs_modulus = 0;
-  Real poisson_ratio = 0;
-
-  /// Throws invalid_parameter naming `where` and the invalid field.
-  void validate(const std::string& where) const {
-    require_positive(youngs_modulus, where + ".youngs_modulus");
-    require_finite(poisson_ratio, where + ".poisson_ratio");
-    if (!(poisson_ratio > -1 && poisson_ratio < Real(1) / 2))
-      throw invalid_parameter("parameter " + where + ".poisson_ratio must be in (-1, 1/2), got " +
-                              to_decimal_string(poisson_ratio));
-  }
-};
-
-/// E* of a bead on a wall; a rigid wall (nullopt) contributes nothing.
-template <class Real>
-Real effective_modulus(const elastic_material<Real>& bead, const std::optional<elastic_material<Real>>& wall) {
-  Real compliance = (1 - bead.poisson_ratio * bead.poisson_ratio) / bead.youngs_modulus;
-  if (wall) compliance += (1 - wall->poisson_ratio * wall->poisson_ratio) / wall->youngs_modulus;
-  return 1 / compliance;
-}
-
-/// Hertz stiffness of a sphere of radius R on a flat: k = (4/3) E* sqrt(R), N/m^(3/2).
-template <class Real>
-Real hertz_stiffness(const Real& effective_modulus_, const Real& radius) {
-  using std::sqrt;
-  return 4 * effective_modulus_ * sqrt(radius) / 3;
-}
-
-/// Mass of a sphere: rho (4/3) pi R^3.
-template <class Real>
-Real sphere_mass(const Real& density, const Real& radius) {
-  return 4 * boost::math::constants::pi<Real>() * density * radius * radius * radius / 3;
-}
 
 /// A scene as decimal text, as read from a file (field names are those of the
 /// JSON format, docs/scenes.md). Exactly one of (mass, stiffness) and
