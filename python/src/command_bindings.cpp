@@ -40,7 +40,11 @@ jobs::physical_inputs physical_of(const text_fields& fields, bool strict) {
       {"v0", &p.v0},         {"gamma0", &p.gamma0},
       {"gravity", &p.gravity}, {"force", &p.force},
       {"youngs_modulus", &p.youngs_modulus}, {"poisson_ratio", &p.poisson_ratio},
-      {"radius", &p.radius}, {"density", &p.density}};
+      {"radius", &p.radius}, {"density", &p.density},
+      {"contact", &p.contact}, {"wall_youngs_modulus", &p.wall_youngs_modulus},
+      {"wall_poisson_ratio", &p.wall_poisson_ratio}, {"other_youngs_modulus", &p.other_youngs_modulus},
+      {"other_poisson_ratio", &p.other_poisson_ratio}, {"other_radius", &p.other_radius},
+      {"other_density", &p.other_density}};
   for (const auto& [name, value] : fields) {
     const auto slot = slots.find(name);
     if (slot == slots.end()) throw invalid_parameter("unknown physical input '" + name + "'");
@@ -112,7 +116,10 @@ py::object dem(const text_fields& fields, int digits, bool strict) {
       {"target_e", &q.target_e},   {"deck_damping", &q.deck_damping},
       {"deck_en", &q.deck_en},     {"v0", &q.v0},
       {"gravity", &q.gravity},     {"force", &q.force},
-      {"speeds", &q.speeds},       {"drop_deck", &q.drop_deck_path}};
+      {"speeds", &q.speeds},       {"drop_deck", &q.drop_deck_path},
+      {"wall_youngs_modulus", &q.wall_youngs_modulus}, {"wall_poisson_ratio", &q.wall_poisson_ratio},
+      {"other_youngs_modulus", &q.other_youngs_modulus}, {"other_poisson_ratio", &q.other_poisson_ratio},
+      {"other_radius", &q.other_radius}, {"other_density", &q.other_density}};
   for (const auto& [name, value] : fields) {
     const auto slot = slots.find(name);
     if (slot == slots.end()) throw invalid_parameter("dem: unknown input '" + name + "'");

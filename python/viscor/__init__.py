@@ -56,7 +56,11 @@ def cor(law=None, gamma=None, g=_SCALED_LOAD_NOT_GIVEN, digits=50, certify=False
     g, the physical inputs as ``viscor cor`` takes them: m (kg) and k (N/m^alpha),
     or youngs_modulus (Pa), poisson_ratio, radius (m) and m or density (kg/m^3);
     v0 (m/s), gamma0 (SI), gravity (m/s^2, required: 0 for none) and force (N,
-    default 0); strict=True refuses inputs far outside their plausible range.
+    default 0); strict=True refuses inputs far outside their plausible range. A
+    wall of its own material: wall_youngs_modulus, wall_poisson_ratio; two beads:
+    contact='pair' (gravity drops out, force presses them together) and, for a
+    second bead unlike the first, other_youngs_modulus, other_poisson_ratio,
+    other_radius, other_density.
     certify=True adds ``certified`` (the digits three computations agree on, four
     where the adaptive one is repeated at the reference precision), as ``viscor cor
     --certify``. Returns a Result with the fields of ``viscor cor --json``: e,
@@ -65,11 +69,11 @@ def cor(law=None, gamma=None, g=_SCALED_LOAD_NOT_GIVEN, digits=50, certify=False
     precision (and stop_overlap for a stick; physical, time_scale_s,
     length_scale_m, contact_time_s, max_compression_m in physical mode).
     """
-    from ._commands import PHYSICAL_INPUTS
+    from ._commands import PHYSICAL_INPUTS, physical_text
     for key in physical:
         if key not in PHYSICAL_INPUTS:
             raise TypeError(f"cor() got an unexpected keyword argument {key!r}")
-    physical = {k: _text(v, k) for k, v in physical.items() if v is not None}
+    physical = {k: physical_text(v, k) for k, v in physical.items() if v is not None}
     if gamma is None and not physical:
         raise TypeError("cor() needs gamma (and g), or the physical inputs m, k, v0, gamma0, gravity")
     if physical and (gamma is not None or g is not _SCALED_LOAD_NOT_GIVEN):

@@ -21,7 +21,8 @@ from ._table import Table
 #: The physical inputs, named as the CLI's options (docs/cli.md): the bead (m, k or
 #: the material), the impact speed, the damping and the load.
 PHYSICAL_INPUTS = ("m", "k", "v0", "gamma0", "gravity", "force", "youngs_modulus", "poisson_ratio", "radius",
-                   "density")
+                   "density", "contact", "wall_youngs_modulus", "wall_poisson_ratio", "other_youngs_modulus",
+                   "other_poisson_ratio", "other_radius", "other_density")
 
 
 def run_cli(*args):
@@ -50,7 +51,16 @@ def run_cli(*args):
 
 def _texts(options, command):
     """The given options as exact decimal text (None: not given)."""
-    return {k: number_text(v, k) for k, v in options.items() if v is not None}
+    return {k: physical_text(v, k) for k, v in options.items() if v is not None}
+
+
+def physical_text(value, name):
+    """A physical input as text: a number's exact decimal, or the contact ('wall' or 'pair') as given."""
+    if name == "contact":
+        if not isinstance(value, str):
+            raise TypeError(f"contact must be 'wall' or 'pair', got {value!r}")
+        return value
+    return number_text(value, name)
 
 
 def _physical(options, command, allowed=PHYSICAL_INPUTS):
@@ -115,14 +125,18 @@ def scale(law=None, *, alpha=None, beta=None, digits=15, gamma=None, g=None, str
 
 
 _DEM_INPUTS = ("damping", "contact", "youngs_modulus", "poisson_ratio", "k", "radius", "density", "target_e",
-               "deck_damping", "deck_en", "v0", "gravity", "force", "speeds", "drop_deck")
+               "deck_damping", "deck_en", "v0", "gravity", "force", "speeds", "drop_deck", "wall_youngs_modulus",
+               "wall_poisson_ratio", "other_youngs_modulus", "other_poisson_ratio", "other_radius", "other_density")
 
 
 def dem(code, *, digits=15, strict=False, **options):
     """Damping entries for a DEM deck (``viscor dem``, docs/dem.md): code 'lammps',
     'liggghts' or 'yade'; damping, contact, youngs_modulus, poisson_ratio (or k),
     radius, density, target_e (or deck_damping, deck_en), v0, gravity, force,
-    speeds (a list), drop_deck (a path to write a complete drop deck to)."""
+    speeds (a list), drop_deck (a path to write a complete drop deck to); a wall
+    of its own material: wall_youngs_modulus, wall_poisson_ratio; contact='pair'
+    with another bead: other_youngs_modulus, other_poisson_ratio, other_radius,
+    other_density."""
     if not isinstance(code, str):
         raise TypeError(f"dem() needs the DEM code as a string ('lammps', 'liggghts' or 'yade'), got {code!r}")
     fields = {"code": code}

@@ -32,6 +32,17 @@ struct physical_options : jobs::physical_inputs {
       app.add_option("--poisson-ratio", poisson_ratio, "bead Poisson ratio, in (-1, 1/2) (with --youngs-modulus)");
       app.add_option("--radius", radius, "bead radius, m (with --youngs-modulus)");
       app.add_option("--density", density, "bead density, kg/m^3 (instead of --m, with --radius)");
+      app.add_option("--contact", contact,
+                     "wall (the default: a bead on a wall) or pair (two beads; gravity drops out, --force presses them "
+                     "together); with the bead as a material");
+      app.add_option("--wall-youngs-modulus", wall_youngs_modulus, "a wall of its own material: its Young's modulus, Pa "
+                                                                   "(neither wall option: a rigid wall)");
+      app.add_option("--wall-poisson-ratio", wall_poisson_ratio, "a wall of its own material: its Poisson ratio");
+      app.add_option("--other-youngs-modulus", other_youngs_modulus,
+                     "--contact pair: the other bead's Young's modulus, Pa (no --other-* option: a bead like the first)");
+      app.add_option("--other-poisson-ratio", other_poisson_ratio, "--contact pair: the other bead's Poisson ratio");
+      app.add_option("--other-radius", other_radius, "--contact pair: the other bead's radius, m");
+      app.add_option("--other-density", other_density, "--contact pair: the other bead's density, kg/m^3");
     }
     add_strict_flag(app, strict);
   }

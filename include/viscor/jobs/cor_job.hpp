@@ -172,8 +172,11 @@ inline command_output run_cor(cor_request q) {
       j["length_scale_m"] = number(scales->length_scale);
       text << "physical   " << q.physical.echo_text() << "\n";
       if (q.physical.has_material())  // the bead's mass and stiffness are computed, not typed
-        text << "bead       m = " << to_decimal_string(p.m, 10) << " kg, k = " << to_decimal_string(p.k, 10)
-             << " N/m^(3/2) (from the material)\n";
+        text << (q.physical.is_pair() ? "pair       m* = " : "bead       m = ") << to_decimal_string(p.m, 10)
+             << " kg, k = " << to_decimal_string(p.k, 10)
+             << (q.physical.is_pair() ? " N/m^(3/2) (the relative motion's reduced mass and stiffness, from the "
+                                        "materials)\n"
+                                      : " N/m^(3/2) (from the material)\n");
     } else {
       gamma_value = parse_real<Real>(*q.gamma, "gamma");
       g_value = q.g ? parse_real<Real>(*q.g, "g") : Real(0);

@@ -1,7 +1,12 @@
 // The physical inputs of an impact, one vocabulary for every job and front end:
 //   m (kg), k (N/m^alpha), v0 (m/s), gamma0 (SI), gravity (m/s^2), force (N),
 // or the bead as a material (Hertz, alpha = 3/2):
-//   youngs_modulus (Pa), poisson_ratio, radius (m), density (kg/m^3).
+//   youngs_modulus (Pa), poisson_ratio, radius (m), density (kg/m^3),
+// hitting a wall (rigid, or of wall_youngs_modulus and wall_poisson_ratio) or, with
+// contact "pair", a second bead (like the first, or of other_youngs_modulus,
+// other_poisson_ratio, other_radius, other_density): then m and k are the reduced
+// mass and the stiffness of the relative motion, a uniform gravity drops out of it
+// (both beads fall alike) and force presses the two together.
 // Values are kept as the user wrote them (exact decimal text) and parsed at the
 // working precision. Gravity never defaults: a physical computation without it is
 // an error naming it (0 is a value the user types), because the load changes the
@@ -17,6 +22,7 @@
 #include <viscor/core/plausible_units.hpp>
 #include <viscor/core/real_io.hpp>
 #include <viscor/core/scaling.hpp>
+#include <viscor/dem/hertz_contact.hpp>
 #include <viscor/scenes/scene.hpp>
 
 #include <cstdlib>
@@ -32,19 +38,23 @@ inline void require_gravity_towards_wall(const std::optional<std::string>& text)
   if (text && std::strtod(text->c_str(), nullptr) < 0) throw invalid_parameter("--" + negative_gravity_message(*text));
 }
 
-/// The bead (m, k) of a Hertz sphere of a material on a rigid wall: the stiffness
-/// from Young's modulus, the Poisson ratio and the radius; the mass given, or from
-/// the density. Holds only for alpha = 3/2 (refused otherwise, naming the law).
+/// The bead (m, k) of a Hertz sphere of a material against a wall or a second bead
+/// (dem::contact_partner: none is a rigid wall, or a bead like the first): the
+/// reduced mass m* and k = (4/3) E* sqrt(R*) (core/elastic_contact.hpp); the mass
+/// given, or from the density. Holds only for alpha = 3/2 (refused otherwise, naming the law).
 template <class Real>
 std::pair<Real, Real> bead_of_material(const contact_law& law, const Real& youngs_modulus, const Real& poisson_ratio,
                                        const Real& radius, const std::optional<Real>& mass,
-                                       const std::optional<Real>& density) {
+                                       const std::optional<Real>& density,
+                                       dem::contact_kind kind = dem::contact_kind::wall,
+                                       const dem::contact_partner<Real>& partner = {}) {
   if (!(law.alpha == exponent::rational(3, 2)))
     throw invalid_parameter("--youngs-modulus gives a Hertz stiffness, which holds only for alpha = 3/2; the law has "
                             "alpha = " + law.alpha.to_string() + ": give --k instead");
   require_positive(radius, "radius");
   elastic_material<Real> material{youngs_modulus, poisson_ratio};
   material.validate("bead");
+  partner.validate(kind);
   Real m;
   if (mass) {
     m = *mass;
@@ -52,20 +62,39 @@ std::pair<Real, Real> bead_of_material(const contact_law& law, const Real& young
     require_positive(*density, "density");
     m = sphere_mass(*density, radius);
   }
-  return {m, hertz_stiffness(effective_modulus<Real>(material, std::nullopt), radius)};
+  if (kind == dem::contact_kind::wall)
+    return {m, hertz_stiffness(effective_modulus<Real>(material, partner.wall), radius)};
+  const std::optional<dem::bead_material<Real>>& other = partner.other;
+  const Real other_mass = other ? other->mass() : m;
+  const Real modulus = effective_modulus<Real>(material, other ? other->elastic() : material);
+  const Real r = effective_radius<Real>(radius, other ? other->radius : radius);
+  return {reduced_mass<Real>(m, other_mass), hertz_stiffness(modulus, r)};
 }
 
 /// The physical inputs as text, with their completeness and unit checks.
 struct physical_inputs {
   std::optional<std::string> m, k, v0, gamma0, gravity, force;
   std::optional<std::string> youngs_modulus, poisson_ratio, radius, density;
+  std::optional<std::string> contact;  ///< "wall" (the default) or "pair"
+  std::optional<std::string> wall_youngs_modulus, wall_poisson_ratio;  ///< a wall of its own material; none: rigid
+  /// The pair's other bead; none: a bead like the first.
+  std::optional<std::string> other_youngs_modulus, other_poisson_ratio, other_radius, other_density;
   std::optional<std::string> deprecated_force;  ///< --F, the spelling before 0.2.0
   bool strict = false;  ///< refuse, not only warn about, inputs outside their plausible range
 
   /// Whether the bead is given as a material (youngs_modulus, poisson_ratio, radius, density).
   bool has_material() const { return youngs_modulus || poisson_ratio || radius || density; }
+  /// Whether a wall material or the other bead is given.
+  bool has_partner() const {
+    return wall_youngs_modulus || wall_poisson_ratio || other_youngs_modulus || other_poisson_ratio || other_radius ||
+           other_density;
+  }
+  /// Whether the bead meets a second bead (contact "pair").
+  bool is_pair() const { return contact && *contact == "pair"; }
   /// Whether any physical input was given (the command is then in physical mode).
-  bool given() const { return m || k || v0 || gamma0 || gravity || force || deprecated_force || has_material(); }
+  bool given() const {
+    return m || k || v0 || gamma0 || gravity || force || deprecated_force || has_material() || contact || has_partner();
+  }
 
   /// The names of the physical options given, "--m, --k", for messages.
   std::string given_names() const {
@@ -75,7 +104,10 @@ struct physical_inputs {
     };
     add(m, "--m"), add(k, "--k"), add(v0, "--v0"), add(gamma0, "--gamma0"), add(gravity, "--gravity");
     add(force, "--force"), add(youngs_modulus, "--youngs-modulus"), add(poisson_ratio, "--poisson-ratio");
-    add(radius, "--radius"), add(density, "--density");
+    add(radius, "--radius"), add(density, "--density"), add(contact, "--contact");
+    add(wall_youngs_modulus, "--wall-youngs-modulus"), add(wall_poisson_ratio, "--wall-poisson-ratio");
+    add(other_youngs_modulus, "--other-youngs-modulus"), add(other_poisson_ratio, "--other-poisson-ratio");
+    add(other_radius, "--other-radius"), add(other_density, "--other-density");
     return s;
   }
 
@@ -100,6 +132,7 @@ struct physical_inputs {
       if (!m) throw invalid_parameter(command + ": physical mode needs --m (bead mass, kg)");
       if (!k) throw invalid_parameter(command + ": physical mode needs --k (contact stiffness, N/m^alpha)");
     }
+    check_partner(command);
     if (!v0) throw invalid_parameter(command + ": physical mode needs --v0 (impact speed, m/s)");
     if (!gravity)
       throw invalid_parameter(command + ": physical mode needs --gravity (m/s^2 towards the wall; 0 for none): "
@@ -115,6 +148,48 @@ struct physical_inputs {
     check_plausible_unit(physical_quantity::radius, radius, "--radius", strict);
     check_plausible_unit(physical_quantity::speed, v0, "--v0", strict);
     check_plausible_unit(physical_quantity::gravity, gravity, "--gravity", strict);
+    check_plausible_unit(physical_quantity::youngs_modulus, wall_youngs_modulus, "--wall-youngs-modulus", strict);
+    check_plausible_unit(physical_quantity::youngs_modulus, other_youngs_modulus, "--other-youngs-modulus", strict);
+    check_plausible_unit(physical_quantity::density, other_density, "--other-density", strict);
+    check_plausible_unit(physical_quantity::radius, other_radius, "--other-radius", strict);
+  }
+
+  /// The contact and its partner: "wall" or "pair", partner inputs complete and fitting the contact.
+  void check_partner(const std::string& command) const {
+    if (contact && *contact != "wall" && *contact != "pair")
+      throw invalid_parameter("--contact must be wall or pair, got '" + *contact + "'");
+    if ((is_pair() || has_partner()) && !has_material())
+      throw invalid_parameter(command + ": a wall material or a second bead needs the bead as a material "
+                                        "(--youngs-modulus, --poisson-ratio, --radius), not --k");
+    const bool wall_given = wall_youngs_modulus || wall_poisson_ratio;
+    const bool other_given = other_youngs_modulus || other_poisson_ratio || other_radius || other_density;
+    if (wall_given && is_pair())
+      throw invalid_parameter(command + ": --wall-youngs-modulus and --wall-poisson-ratio describe a wall, not "
+                                        "--contact pair");
+    if (other_given && !is_pair())
+      throw invalid_parameter(command + ": --other-youngs-modulus, --other-poisson-ratio, --other-radius and "
+                                        "--other-density describe the second bead of --contact pair");
+    if (wall_given && (!wall_youngs_modulus || !wall_poisson_ratio))
+      throw invalid_parameter(command + ": a wall of its own material needs --wall-youngs-modulus and "
+                                        "--wall-poisson-ratio (neither: a rigid wall)");
+    if (other_given && (!other_youngs_modulus || !other_poisson_ratio || !other_radius || !other_density))
+      throw invalid_parameter(command + ": the other bead needs --other-youngs-modulus, --other-poisson-ratio, "
+                                        "--other-radius and --other-density (none: a bead like the first)");
+  }
+
+  /// The wall's material or the other bead at the working precision (call check() first).
+  template <class Real>
+  dem::contact_partner<Real> partner() const {
+    dem::contact_partner<Real> p;
+    if (wall_youngs_modulus)
+      p.wall = elastic_material<Real>{parse_real<Real>(*wall_youngs_modulus, "wall_youngs_modulus"),
+                                      parse_real<Real>(*wall_poisson_ratio, "wall_poisson_ratio")};
+    if (other_youngs_modulus)
+      p.other = dem::bead_material<Real>{parse_real<Real>(*other_youngs_modulus, "other_youngs_modulus"),
+                                         parse_real<Real>(*other_poisson_ratio, "other_poisson_ratio"),
+                                         parse_real<Real>(*other_radius, "other_radius"),
+                                         parse_real<Real>(*other_density, "other_density")};
+    return p;
   }
 
   /// The bead (m, k) at the working precision; from the material when given.
@@ -125,7 +200,14 @@ struct physical_inputs {
     const std::optional<Real> rho = density ? std::optional<Real>(parse_real<Real>(*density, "density")) : std::nullopt;
     return bead_of_material<Real>(law, parse_real<Real>(*youngs_modulus, "youngs_modulus"),
                                   parse_real<Real>(*poisson_ratio, "poisson_ratio"), parse_real<Real>(*radius, "radius"),
-                                  mass, rho);
+                                  mass, rho, is_pair() ? dem::contact_kind::pair : dem::contact_kind::wall,
+                                  partner<Real>());
+  }
+
+  /// The gravity the relative motion feels: as given on a wall, 0 for a pair (both beads fall alike).
+  template <class Real>
+  Real acting_gravity() const {
+    return is_pair() ? Real(0) : parse_real<Real>(*gravity, "gravity");
   }
 
   /// Every physical input at the working precision (call check() first); gamma0 0 when absent.
@@ -135,7 +217,7 @@ struct physical_inputs {
     std::tie(p.m, p.k) = bead<Real>(law);
     p.v0 = parse_real<Real>(*v0, "v0");
     p.gamma0 = gamma0 ? parse_real<Real>(*gamma0, "gamma0") : Real(0);
-    p.gravity = parse_real<Real>(*gravity, "gravity");
+    p.gravity = acting_gravity<Real>();
     p.force = force ? parse_real<Real>(*force, "force") : Real(0);
     p.validate();
     return p;
@@ -149,8 +231,13 @@ struct physical_inputs {
     };
     put("m", m, "kg"), put("k", k, "N/m^alpha"), put("youngs_modulus", youngs_modulus, "Pa");
     put("poisson_ratio", poisson_ratio, ""), put("radius", radius, "m"), put("density", density, "kg/m^3");
+    put("contact", contact, ""), put("wall_youngs_modulus", wall_youngs_modulus, "Pa");
+    put("wall_poisson_ratio", wall_poisson_ratio, ""), put("other_youngs_modulus", other_youngs_modulus, "Pa");
+    put("other_poisson_ratio", other_poisson_ratio, ""), put("other_radius", other_radius, "m");
+    put("other_density", other_density, "kg/m^3");
     put("gamma0", gamma0, ""), put("v0", v0, "m/s"), put("gravity", gravity, "m/s^2");
     put("force", force ? force : std::optional<std::string>("0"), "N");
+    if (is_pair()) s += " (gravity drops out of the pair's relative motion)";
     return s;
   }
 
@@ -163,7 +250,10 @@ struct physical_inputs {
     put("m", m), put("k", k), put("v0", v0), put("gamma0", gamma0), put("gravity", gravity);
     j["force"] = force ? *force : std::string("0");
     put("youngs_modulus", youngs_modulus), put("poisson_ratio", poisson_ratio), put("radius", radius);
-    put("density", density);
+    put("density", density), put("contact", contact);
+    put("wall_youngs_modulus", wall_youngs_modulus), put("wall_poisson_ratio", wall_poisson_ratio);
+    put("other_youngs_modulus", other_youngs_modulus), put("other_poisson_ratio", other_poisson_ratio);
+    put("other_radius", other_radius), put("other_density", other_density);
     return j;
   }
 

@@ -46,7 +46,7 @@ inline command_output run_scale(scale_request q) {
     if (inverse) {
       const auto [mass, stiffness] = q.physical.bead<Real>(q.law);
       const Real speed = parse_real<Real>(*q.physical.v0, "v0");
-      const Real grav = parse_real<Real>(*q.physical.gravity, "gravity");
+      const Real grav = q.physical.acting_gravity<Real>();
       const Real gamma_value = parse_real<Real>(*q.gamma, "gamma"), g_value = parse_real<Real>(*q.g, "g");
       const physical_parameters<Real> p = to_physical(q.law, gamma_value, g_value, mass, stiffness, speed, grav);
       j["physical"].erase("force");

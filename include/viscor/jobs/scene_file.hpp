@@ -64,6 +64,12 @@ class scene_reader : public node_reader {
         bead(node, d, out);
       } else if (key == "wall") {
         wall(node, d, out);
+      } else if (key == "contact") {
+        const std::string c = string(node, key);
+        if (c != "wall" && c != "pair") fail(node, key, "must be \"wall\" or \"pair\", got \"" + c + "\"");
+        d.pair = c == "pair";
+      } else if (key == "other") {
+        other(node, d, out);
       } else if (key == "damping") {
         damping(node, d, out);
       } else if (key == "gravity") {
@@ -89,8 +95,8 @@ class scene_reader : public node_reader {
         out.error_maps = p.is_absolute() ? p.string() : (std::filesystem::path(m_file).parent_path() / p).string();
       } else {
         fail(node, key,
-             "unknown field (known: law, bead, wall, damping, gravity, force, velocities, tolerance, bound, "
-             "contact_time, error_maps, description)");
+             "unknown field (known: law, bead, wall, contact, other, damping, gravity, force, velocities, "
+             "tolerance, bound, contact_time, error_maps, description)");
       }
     }
     if (!have_law) fail(root, "law", "missing (a named law such as \"kuwabara_kono\", or {\"alpha\": .., \"beta\": ..})");
@@ -167,6 +173,18 @@ class scene_reader : public node_reader {
       else fail(v, path, "unknown field (known: youngs_modulus, poisson_ratio)");
     });
     if (!d.wall_youngs_modulus || !d.wall_poisson_ratio) fail(node, "wall", "needs youngs_modulus and poisson_ratio");
+  }
+
+  void other(const spec_node& node, scene_description& d, scene_file& out) const {
+    members(node, "other", out, [&](const std::string& key, const spec_node& v, const std::string& path) {
+      if (key == "density") d.other_density = number_text(v, path);
+      else if (key == "radius") d.other_radius = number_text(v, path);
+      else if (key == "youngs_modulus") d.other_youngs_modulus = number_text(v, path);
+      else if (key == "poisson_ratio") d.other_poisson_ratio = number_text(v, path);
+      else fail(v, path, "unknown field (known: density, radius, youngs_modulus, poisson_ratio)");
+    });
+    if (!d.other_density || !d.other_radius || !d.other_youngs_modulus || !d.other_poisson_ratio)
+      fail(node, "other", "needs density, radius, youngs_modulus and poisson_ratio");
   }
 
   void damping(const spec_node& node, scene_description& d, scene_file& out) const {

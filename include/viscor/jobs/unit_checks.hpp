@@ -35,6 +35,9 @@ void check_plausible_scene_units(const scene_description& d, bool strict, const 
   if (std::strtod(d.gravity.c_str(), nullptr) < 0) throw invalid_parameter(where("gravity") + negative_gravity_message(d.gravity));
   check(physical_quantity::youngs_modulus, d.youngs_modulus, "bead.youngs_modulus");
   check(physical_quantity::youngs_modulus, d.wall_youngs_modulus, "wall.youngs_modulus");
+  check(physical_quantity::youngs_modulus, d.other_youngs_modulus, "other.youngs_modulus");
+  check(physical_quantity::density, d.other_density, "other.density");
+  check(physical_quantity::radius, d.other_radius, "other.radius");
   check(physical_quantity::density, d.density, "bead.density");
   check(physical_quantity::radius, d.radius, "bead.radius");
   check(physical_quantity::gravity, d.gravity, "gravity");

@@ -3,12 +3,12 @@
 //
 // The bead is given either by its mass m and contact stiffness k directly, or by
 // density rho, radius R, Young's modulus E1 and Poisson ratio nu1 against a wall
-// (E2, nu2, or rigid). Then, for a sphere on a flat (Hertz; Johnson, Contact
-// Mechanics, eq. 4.22 with the flat's radius infinite),
-//     F = k delta^(3/2),  k = (4/3) E* sqrt(R),  1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2,
-//     m = rho (4/3) pi R^3,
-// with the wall's term dropped for a rigid wall. This stiffness exists only for
-// alpha = 3/2. Damping is gamma0 directly, or calibrated (calibration.hpp) from a
+// (E2, nu2, or rigid) or, with contact "pair", a second bead (like the first, or
+// of its own material and size). Then (Hertz, core/elastic_contact.hpp)
+//     F = k delta^(3/2),  k = (4/3) E* sqrt(R*),  1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2,
+// with the wall's term dropped for a rigid wall, R* = R and m = rho (4/3) pi R^3 on a
+// wall, and the reduced R* and m* of the two beads in a pair, where a uniform gravity
+// drops out of the relative motion. This stiffness exists only for alpha = 3/2. Damping is gamma0 directly, or calibrated (calibration.hpp) from a
 // CoR measured at a stated impact speed, gravity and force.
 //
 // Every impact is converted to (gamma, g) by eq. (2) at the working precision and
@@ -48,6 +48,9 @@ struct scene_description {
   std::optional<std::string> mass, stiffness;
   std::optional<std::string> density, radius, youngs_modulus, poisson_ratio;
   std::optional<std::string> wall_youngs_modulus, wall_poisson_ratio;  ///< neither: a rigid wall
+  bool pair = false;  ///< contact "pair": the bead meets a second bead, not a wall
+  /// The pair's other bead ("other" in the file); none: a bead like the first.
+  std::optional<std::string> other_density, other_radius, other_youngs_modulus, other_poisson_ratio;
   std::optional<std::string> gamma0;
   std::optional<std::string> measured_e, measured_speed, measured_gravity, measured_force;
   std::string gravity = "0", force = "0";
@@ -118,8 +121,12 @@ resolved_scene<Real> resolve_scene(const scene_description& d) {
                                    : "scene: missing field bead (bead.m and bead.k, or bead.density, "
                                      "radius, youngs_modulus and poisson_ratio)");
   const bool wall = d.wall_youngs_modulus || d.wall_poisson_ratio;
+  const bool other = d.other_density || d.other_radius || d.other_youngs_modulus || d.other_poisson_ratio;
+  if (wall && d.pair) throw invalid_parameter("scene: a wall material belongs to contact \"wall\", not \"pair\"");
+  if (other && !d.pair) throw invalid_parameter("scene: field other (the second bead) needs contact \"pair\"");
   if (direct) {
     if (wall) throw invalid_parameter("scene: a wall material needs the bead as a material, not bead.k");
+    if (d.pair) throw invalid_parameter("scene: contact \"pair\" needs the beads as materials, not bead.k");
     s.mass = scene_number<Real>(d.mass, "bead.m");
     s.stiffness = scene_number<Real>(d.stiffness, "bead.k");
     require_positive(s.mass, "bead.m");
@@ -142,12 +149,30 @@ resolved_scene<Real> resolve_scene(const scene_description& d) {
       w->validate("wall");
     }
     s.mass = sphere_mass(density, radius);
-    s.stiffness = hertz_stiffness(effective_modulus(bead, w), radius);
+    if (d.pair) {  // the relative motion of the two beads: E*, R*, m* of the pair
+      elastic_material<Real> second = bead;
+      Real second_radius = radius, second_mass = s.mass;
+      if (other) {
+        second = {scene_number<Real>(d.other_youngs_modulus, "other.youngs_modulus"),
+                  scene_number<Real>(d.other_poisson_ratio, "other.poisson_ratio")};
+        second.validate("other");
+        second_radius = scene_number<Real>(d.other_radius, "other.radius");
+        const Real second_density = scene_number<Real>(d.other_density, "other.density");
+        require_positive(second_radius, "other.radius");
+        require_positive(second_density, "other.density");
+        second_mass = sphere_mass(second_density, second_radius);
+      }
+      s.stiffness = hertz_stiffness(effective_modulus<Real>(bead, second), effective_radius<Real>(radius, second_radius));
+      s.mass = reduced_mass<Real>(s.mass, second_mass);
+    } else {
+      s.stiffness = hertz_stiffness(effective_modulus(bead, w), radius);
+    }
     s.stiffness_from_material = true;
   }
 
   // Load and speeds.
   s.gravity = parse_real<Real>(d.gravity, "gravity");
+  if (d.pair) s.gravity = 0;  // both beads fall alike: it drops out of the relative motion
   s.force = parse_real<Real>(d.force, "force");
   for (std::size_t i = 0; i < d.velocities.size(); ++i) {
     const std::string field = "velocities[" + std::to_string(i) + "]";
@@ -189,7 +214,7 @@ resolved_scene<Real> resolve_scene(const scene_description& d) {
       const C e = parse_real<C>(*d.measured_e, "damping.measured_e");
       const C speed = scene_number<C>(d.measured_speed, "damping.v0");
       require_positive(speed, "damping.v0");
-      const C grav = scene_number<C>(d.measured_gravity, "damping.gravity");
+      const C grav = d.pair ? C(0) : scene_number<C>(d.measured_gravity, "damping.gravity");
       const C f = d.measured_force ? parse_real<C>(*d.measured_force, "damping.force") : C(0);
       calibration_options<C> options;
       options.tolerance = detail::default_calibration_tolerance<C>();  // <= tolerance / 10 by the choice of C
