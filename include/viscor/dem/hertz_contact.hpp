@@ -13,6 +13,8 @@
 #include <viscor/core/exceptions.hpp>
 #include <viscor/core/parameters.hpp>
 
+#include <boost/math/constants/constants.hpp>
+
 #include <optional>
 #include <string>
 #include <string_view>
@@ -52,7 +54,9 @@ struct bead_material {
   }
 
   /// The bead's mass 4/3 pi R^3 rho, kg.
-  Real mass() const { return sphere_mass(density, radius); }
+  Real mass() const {  // NOTE: this order of operations since the first release: decks stay bit-identical
+    return 4 * boost::math::constants::pi<Real>() * radius * radius * radius * density / 3;
+  }
 
   /// Its elastic constants.
   elastic_material<Real> elastic() const { return {youngs_modulus, poisson_ratio}; }
