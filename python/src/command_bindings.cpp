@@ -112,7 +112,8 @@ py::object dem(const text_fields& fields, int digits, bool strict) {
       {"target_e", &q.target_e},   {"deck_damping", &q.deck_damping},
       {"deck_en", &q.deck_en},     {"v0", &q.v0},
       {"gravity", &q.gravity},     {"force", &q.force},
-      {"speeds", &q.speeds},       {"drop_deck", &q.drop_deck_path}};
+      {"speeds", &q.speeds},       {"drop_deck", &q.drop_deck_path},
+      {"variables", &q.variables_path}};
   for (const auto& [name, value] : fields) {
     const auto slot = slots.find(name);
     if (slot == slots.end()) throw invalid_parameter("dem: unknown input '" + name + "'");

@@ -115,14 +115,15 @@ def scale(law=None, *, alpha=None, beta=None, digits=15, gamma=None, g=None, str
 
 
 _DEM_INPUTS = ("damping", "contact", "youngs_modulus", "poisson_ratio", "k", "radius", "density", "target_e",
-               "deck_damping", "deck_en", "v0", "gravity", "force", "speeds", "drop_deck")
+               "deck_damping", "deck_en", "v0", "gravity", "force", "speeds", "drop_deck", "variables")
 
 
 def dem(code, *, digits=15, strict=False, **options):
     """Damping entries for a DEM deck (``viscor dem``, docs/dem.md): code 'lammps',
     'liggghts' or 'yade'; damping, contact, youngs_modulus, poisson_ratio (or k),
     radius, density, target_e (or deck_damping, deck_en), v0, gravity, force,
-    speeds (a list), drop_deck (a path to write a complete drop deck to)."""
+    speeds (a list), drop_deck (a path to write a complete drop deck to), variables (a path to
+    write the LAMMPS/LIGGGHTS ``variable`` block of ``viscor dem --variables`` to)."""
     if not isinstance(code, str):
         raise TypeError(f"dem() needs the DEM code as a string ('lammps', 'liggghts' or 'yade'), got {code!r}")
     fields = {"code": code}
@@ -133,7 +134,7 @@ def dem(code, *, digits=15, strict=False, **options):
             continue
         if key in ("damping", "contact"):
             fields[key] = str(value)
-        elif key == "drop_deck":
+        elif key in ("drop_deck", "variables"):
             fields[key] = os.fspath(value)
         elif key == "speeds" and isinstance(value, (list, tuple)):
             fields[key] = ",".join(number_text(v, key) for v in value)
