@@ -126,7 +126,8 @@ def scale(law=None, *, alpha=None, beta=None, digits=15, gamma=None, g=None, str
 
 _DEM_INPUTS = ("damping", "contact", "youngs_modulus", "poisson_ratio", "k", "radius", "density", "target_e",
                "deck_damping", "deck_en", "v0", "gravity", "force", "speeds", "drop_deck", "wall_youngs_modulus",
-               "wall_poisson_ratio", "other_youngs_modulus", "other_poisson_ratio", "other_radius", "other_density")
+               "wall_poisson_ratio", "other_youngs_modulus", "other_poisson_ratio", "other_radius", "other_density",
+               "variables")
 
 
 def dem(code, *, digits=15, strict=False, **options):
@@ -136,7 +137,8 @@ def dem(code, *, digits=15, strict=False, **options):
     speeds (a list), drop_deck (a path to write a complete drop deck to); a wall
     of its own material: wall_youngs_modulus, wall_poisson_ratio; contact='pair'
     with another bead: other_youngs_modulus, other_poisson_ratio, other_radius,
-    other_density."""
+    other_density; variables (a path to write the LAMMPS/LIGGGHTS ``variable`` block
+    of ``viscor dem --variables`` to)."""
     if not isinstance(code, str):
         raise TypeError(f"dem() needs the DEM code as a string ('lammps', 'liggghts' or 'yade'), got {code!r}")
     fields = {"code": code}
@@ -147,7 +149,7 @@ def dem(code, *, digits=15, strict=False, **options):
             continue
         if key in ("damping", "contact"):
             fields[key] = str(value)
-        elif key == "drop_deck":
+        elif key in ("drop_deck", "variables"):
             fields[key] = os.fspath(value)
         elif key == "speeds" and isinstance(value, (list, tuple)):
             fields[key] = ",".join(number_text(v, key) for v in value)

@@ -56,6 +56,9 @@ void setup(CLI::App& app) {
   app.add_option("--drop-deck", q.drop_deck_path,
                  "also write a complete single-bead drop on a wall for the code (LAMMPS/LIGGGHTS input, YADE script) "
                  "that prints the rebound e; never replaces a file viscor did not write");
+  app.add_option("--variables", q.variables_path,
+                 "lammps, liggghts: also write the entries, the impact and the time step as a `variable` block "
+                 "(variable viscor_NAME string VALUE) for a deck's `include`; never replaces a file viscor did not write");
   app.add_option("--digits", q.digits, "working precision in decimal digits")->capture_default_str();
   add_strict_flag(app, q.strict);
   app.callback([cmd] { cmd->run(); });

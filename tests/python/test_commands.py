@@ -112,6 +112,20 @@ class JobsSameAsTheCli(unittest.TestCase):
         r = viscor.dem("lammps", speeds=["0.1", "1"], **options)
         same_fields(self, r, cli_json("dem", "lammps", "--speeds", "0.1,1", *cli_words(options)))
 
+    def test_dem_variables_block_same_as_the_cli(self):
+        options = dict(damping="hertz", youngs_modulus="3e9", poisson_ratio="0.35", radius="1e-3", density="1200",
+                       target_e="0.5", v0="0.01", gravity="9.81")
+        with tempfile.TemporaryDirectory() as scratch:
+            mine, theirs = os.path.join(scratch, "python.in"), os.path.join(scratch, "cli.in")
+            r = viscor.dem("liggghts", variables=mine, **options)
+            cli = cli_json("dem", "liggghts", "--variables", theirs, *cli_words(options))
+            self.assertEqual(r.variables, mine)
+            self.assertEqual(cli["variables"], theirs)
+            with open(mine) as a, open(theirs) as b:
+                block = a.read()
+                self.assertEqual(block, b.read())
+            self.assertIn("variable viscor_damping string " + r.deck.damping + "\n", block)
+
 
 class PhysicalInputs(unittest.TestCase):
     BEAD = dict(m="2.05e-3", k="6.9716e9", v0="0.246", gravity="9.8")

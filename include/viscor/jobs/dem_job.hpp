@@ -45,6 +45,7 @@ struct dem_request {
   std::string v0, gravity, force = "0";
   std::string speeds = "0.001,0.01,0.1,1,10";  ///< reverse: impact speeds, comma-separated
   std::string drop_deck_path;    ///< forward: also write a complete single-bead drop deck here
+  std::string variables_path;    ///< forward, LAMMPS/LIGGGHTS: also write the entries as a `variable` block here
   int digits = 15;               ///< working precision in decimal digits
   bool strict = false;           ///< refuse, not only warn about, implausible inputs
 };
@@ -196,6 +197,7 @@ struct dem_job : dem_request {
     if (!drop_deck_path.empty() && model.code == dem::dem_code::yade && !drop_deck_path.ends_with(".py"))
       throw invalid_parameter("--drop-deck " + drop_deck_path + ": a YADE script must end in .py (yade -x "
                               "silently skips other files)");
+    if (!variables_path.empty()) check_variables_request(model, reverse);
     if (!reverse) {
       require(target_e, "--target-e", "the measured coefficient of restitution, 0 < e < 1");
       require(v0, "--v0", "impact speed, m/s");
@@ -357,6 +359,74 @@ struct dem_job : dem_request {
       j["drop_deck"] = drop_deck_path;
       text << "drop deck   wrote " << drop_deck_path << " (run: " << drop_run_command(model) << ")\n";
     }
+    if (!variables_path.empty()) {
+      write_variables(variable_block(model, impact.kind, s, drop_inputs(impact, timing),
+                                     to_decimal_string(timing.contact_time)));
+      j["variables"] = variables_path;
+      text << "variables   wrote " << variables_path << " (in the deck: include " << variables_path
+           << ", then ${viscor_...}; units si)\n";
+    }
+  }
+
+  /// The first line of every variable block viscor writes (--variables replaces only such a file).
+  static constexpr const char* variables_marker = "# viscor dem variables";
+
+  /// --variables: LAMMPS and LIGGGHTS only (a YADE script asks viscor itself), forward only.
+  void check_variables_request(const dem::dem_model& model, bool reverse) const {
+    if (model.code == dem::dem_code::yade)
+      throw invalid_parameter("--variables " + variables_path + " writes a LAMMPS/LIGGGHTS `variable` block; a YADE "
+                              "script is Python: import viscor and call viscor.dem(...) in it (docs/dem.md)");
+    if (reverse)
+      throw invalid_parameter("--variables " + variables_path + " writes the entries of a calibrated deck: give "
+                              "--target-e, not --deck-damping/--deck-en");
+  }
+
+  /// The deck entries, the impact they are calibrated for and the time step as LAMMPS/LIGGGHTS
+  /// `variable NAME string VALUE` lines (exact decimal text, substituted verbatim by ${NAME}).
+  static std::string variable_block(const dem::dem_model& model, dem::contact_kind kind, const dem::deck_strings& s,
+                                    const dem::drop_deck_inputs& in, const std::string& contact_time) {
+    std::string b = std::string(variables_marker) + ": " + std::string(model.version) + ", " +
+                    std::string(model.code_name) + " damping " + std::string(model.damping_name) + " on a " +
+                    std::string(dem::to_string(kind)) + " (viscor law " + std::string(model.law_name) + ")\n";
+    b += "# use: `include FILE` in a deck with `units si`, then ${viscor_NAME} where the values go\n";
+    const auto line = [&b](const std::string& name, const std::string& value) {
+      b += "variable viscor_" + name + " string " + value + "\n";
+    };
+    b += "# the impact the entries are calibrated for (SI units, as given to viscor dem)\n";
+    line("radius", in.radius), line("diameter", in.diameter), line("density", in.density);
+    line("v0", in.v0), line("gravity", in.gravity), line("force", in.force), line("target_e", in.target_e);
+    b += model.code == dem::dem_code::liggghts
+             ? "# model hertz: youngsModulus and poissonsRatio of the bead type; damping = the bead-wall\n"
+               "# coefficientRestitution; wall_youngs_modulus = the wall type's youngsModulus (1e30: rigid)\n"
+             : "# hertz/material E damp nu damping " + std::string(model.damping_name) +
+                   ": youngs_modulus = E, damping = damp, poisson_ratio = nu\n";
+    line("youngs_modulus", s.youngs_modulus), line("poisson_ratio", s.poisson_ratio), line("damping", s.damping);
+    if (s.wall_youngs_modulus) line("wall_youngs_modulus", *s.wall_youngs_modulus);
+    if (s.wall_poisson_ratio) line("wall_poisson_ratio", *s.wall_poisson_ratio);
+    if (s.other_youngs_modulus) {
+      b += "# the other bead (type 2) and, for LAMMPS, the explicit cross entry pair_coeff 1 2\n";
+      line("other_youngs_modulus", *s.other_youngs_modulus), line("other_poisson_ratio", *s.other_poisson_ratio);
+      if (s.cross_youngs_modulus) line("cross_youngs_modulus", *s.cross_youngs_modulus);
+      if (s.other_other_damping) line("other_other_damping", *s.other_other_damping);
+    }
+    if (s.bead_bead_damping) {
+      b += "# bead-bead entries: two beads at the same e and approach speed, without load\n";
+      line("bead_bead_youngs_modulus", s.bead_bead_youngs_modulus.value_or(s.youngs_modulus));
+      line("bead_bead_damping", *s.bead_bead_damping);
+    }
+    b += "# the recommended time step, T/" + in.steps_per_time_scale + " (halve it for a smaller error), and how "
+         "long the contact lasts, s\n";
+    line("time_step", in.time_step), line("contact_time", contact_time);
+    return b;
+  }
+
+  /// Writes the block (jobs/files.hpp); never replaces a file viscor did not write.
+  void write_variables(const std::string& block) const {
+    std::error_code ec;
+    if (std::filesystem::exists(variables_path, ec) && !file_starts_with(variables_path, variables_marker))
+      throw invalid_parameter("--variables " + variables_path + ": the file exists and is not a variable block "
+                              "viscor wrote; refusing to replace it (remove it or choose another name)");
+    write_atomically(variables_path, block);
   }
 
   /// LAMMPS and LIGGGHTS read the like-bead entries apart from the contact's (pair_coeff, type pairs (1,1), (2,2))
