@@ -1,8 +1,10 @@
 // Files as the jobs read and write them: a whole file read at once, and output
 // written safely (only regular files, every write checked up to the close, the file
-// replaced in one rename so that a failure leaves nothing behind).
+// replaced in one rename so that a failure leaves nothing behind, and its line in a
+// checksum manifest beside it kept true: core/checksums.hpp).
 #pragma once
 
+#include <viscor/core/checksums.hpp>
 #include <viscor/core/exceptions.hpp>
 
 #include <cerrno>
@@ -11,6 +13,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <sys/file.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -89,6 +92,50 @@ inline void write_atomically(const std::string& path, const std::string& body) {
     ::unlink(temporary.c_str());
     throw error("cannot move output into '" + path + "': " + std::strerror(e));
   }
+  update_checksum(path, body);  // a committed file viscor regenerates keeps a true manifest line
 }
+
+/// An exclusive lock on an output: the file `output + ".lock"`, held with flock(2)
+/// while the job runs, so that a second viscor writing the same output stops at once
+/// with a message instead of both appending to one partial file. The lock file is
+/// removed when the holder finishes (a lock left by a killed run is free again: the
+/// kernel drops flock locks with the process).
+class output_lock {
+ public:
+  /// Takes the lock; throws viscor::error naming the output when another process holds it.
+  explicit output_lock(const std::string& output) : m_path(output + ".lock") {
+    refuse_unless_regular_or_absent(m_path);
+    for (int attempt = 0; attempt < 100; ++attempt) {
+      m_fd = ::open(m_path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0666);
+      if (m_fd < 0) throw error("cannot create the lock file '" + m_path + "': " + std::strerror(errno));
+      if (::flock(m_fd, LOCK_EX | LOCK_NB) != 0) {
+        const int e = errno;
+        ::close(m_fd);
+        if (e == EWOULDBLOCK)
+          throw error("another viscor is writing '" + output + "' (it holds '" + m_path + "'): wait for it to "
+                      "finish, or choose another output file");
+        throw error("cannot lock '" + m_path + "': " + std::strerror(e));
+      }
+      // The holder before us may have removed the file between our open and flock: lock
+      // only the file that is still at the path.
+      struct stat held {}, at_path {};
+      if (::fstat(m_fd, &held) == 0 && ::stat(m_path.c_str(), &at_path) == 0 && held.st_ino == at_path.st_ino &&
+          held.st_dev == at_path.st_dev)
+        return;
+      ::close(m_fd);
+    }
+    throw error("cannot lock '" + m_path + "': it keeps being replaced");
+  }
+  output_lock(const output_lock&) = delete;
+  output_lock& operator=(const output_lock&) = delete;
+  ~output_lock() {
+    ::unlink(m_path.c_str());  // before the unlock, so that a waiter re-checks the path
+    ::close(m_fd);
+  }
+
+ private:
+  std::string m_path;
+  int m_fd = -1;
+};
 
 }  // namespace viscor::jobs

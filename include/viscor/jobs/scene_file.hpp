@@ -225,8 +225,10 @@ class scene_reader : public node_reader {
         d.velocity_to = number_text(v, path);
       } else if (key == "count") {
         const std::string t = number_text(v, path);
-        if (t.find_first_not_of("0123456789") != std::string::npos || t.size() > 9 || std::stol(t) < 1)
-          fail(v, path, "must be a whole number from 1 to 999999999, got " + t);
+        if (t.find_first_not_of("0123456789") != std::string::npos || t.size() > 9 || std::stol(t) < 1 ||
+            static_cast<std::size_t>(std::stol(t)) > max_scene_impacts)
+          fail(v, path, "must be a whole number from 1 to " + std::to_string(max_scene_impacts) + " (the most "
+                        "impacts one scene evaluates), got " + t);
         d.velocity_count = static_cast<std::size_t>(std::stol(t));
         have_count = true;
       } else if (key == "spacing") {

@@ -14,7 +14,7 @@
 
 #include <viscor/core/exceptions.hpp>
 #include <viscor/jobs/files.hpp>
-#include <viscor/jobs/sha256.hpp>
+#include <viscor/core/sha256.hpp>
 #include <viscor/jobs/surrogate_files.hpp>
 #include <viscor/surrogate/cor_surrogate.hpp>
 #include <viscor/surrogate/surrogate_verify.hpp>

@@ -212,9 +212,11 @@ inline table_run_summary run_table_job(const table_job& job) {
   const std::set<std::int64_t> wanted(job.indices.begin(), job.indices.end());
   const json fingerprint = table_fingerprint(job.provenance);
   const table_format format{job.kind, job.proven};
-  // Before any work: every file this run writes must be a regular file or absent.
+  // Before any work: every file this run writes must be a regular file or absent, and
+  // no other run may be writing them.
   for (const std::string& path : {job.output, job.output + ".json", partial, partial_meta})
     refuse_unless_regular_or_absent(path);
+  const output_lock lock(job.output);
 
   // Rows already done by an interrupted run.
   std::set<std::int64_t> done;

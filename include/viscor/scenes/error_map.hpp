@@ -23,6 +23,7 @@
 #pragma once
 
 #include <viscor/approx/approximations.hpp>
+#include <viscor/core/checksums.hpp>
 #include <viscor/core/contact_law.hpp>
 #include <viscor/core/exceptions.hpp>
 #include <viscor/core/outcome.hpp>
@@ -332,12 +333,9 @@ inline error_map parse_error_map(const std::string& text, const std::string& fil
 }
 
 /// Reads an error map file (see parse_error_map).
+/// A map listed in a checksum manifest beside it is checked first (core/checksums.hpp).
 inline error_map read_error_map(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw parse_error("cannot open error map '" + path + "'");
-  std::ostringstream s;
-  s << in.rdbuf();
-  return parse_error_map(s.str(), path);
+  return parse_error_map(read_checked_file<parse_error>(path, "error map"), path);
 }
 
 /// The text of a map file. Bounds are written with 3 significant digits, rounded up.

@@ -39,6 +39,10 @@
 
 namespace viscor {
 
+/// The most impacts one scene evaluates (a range's count): each impact is a row held in
+/// memory, so a count of 10^9 would ask for gigabytes before the first solve.
+inline constexpr std::size_t max_scene_impacts = 10'000'000;
+
 /// A scene as decimal text, as read from a file (field names are those of the
 /// JSON format, docs/scenes.md). Exactly one of (mass, stiffness) and
 /// (density, radius, youngs_modulus, poisson_ratio) describes the bead; exactly one
@@ -187,6 +191,9 @@ resolved_scene<Real> resolve_scene(const scene_description& d) {
     require_positive(from, "velocities.from");
     require_positive(to, "velocities.to");
     if (d.velocity_count == 0) throw invalid_parameter("scene: field velocities.count must be >= 1");
+    if (d.velocity_count > max_scene_impacts)
+      throw invalid_parameter("scene: field velocities.count must be at most " + std::to_string(max_scene_impacts) +
+                              ", got " + std::to_string(d.velocity_count));
     using std::pow;
     for (std::size_t i = 0; i < d.velocity_count; ++i) {
       const Real t = d.velocity_count == 1 ? Real(0) : Real(Real(i) / Real(d.velocity_count - 1));

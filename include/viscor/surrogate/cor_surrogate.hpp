@@ -21,6 +21,7 @@
 // read_cor_surrogate.
 #pragma once
 
+#include <viscor/core/checksums.hpp>
 #include <viscor/core/outcome.hpp>
 #include <viscor/core/exceptions.hpp>
 #include <viscor/surrogate/chebyshev.hpp>
@@ -609,10 +610,10 @@ inline cor_surrogate read_cor_surrogate(std::istream& in, const std::string& pat
   return s;
 }
 
-/// Reads a surrogate file written by write_cor_surrogate; throws parse_error naming the file.
+/// Reads a surrogate file written by write_cor_surrogate; throws parse_error naming the
+/// file. A file listed in a checksum manifest beside it is checked first (core/checksums.hpp).
 inline cor_surrogate read_cor_surrogate(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw invalid_parameter("cannot open surrogate file '" + path + "'");
+  std::istringstream in(read_checked_file<invalid_parameter>(path, "surrogate file"));
   return read_cor_surrogate(in, path);
 }
 

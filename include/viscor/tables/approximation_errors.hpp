@@ -19,6 +19,7 @@
 // are computed once per (law, g, source), so the quadrature costs little.
 #pragma once
 
+#include <viscor/core/checksums.hpp>
 #include <viscor/core/field_names.hpp>
 #include <viscor/approx/approximations.hpp>
 #include <viscor/approx/closed_form.hpp>
@@ -281,8 +282,7 @@ struct baseline_entry {
 
 /// Reads a baseline file ('#' lines are comments). Throws parse_error naming file and line.
 inline std::vector<baseline_entry> read_error_baseline(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw error("cannot read baseline '" + path + "'");
+  std::istringstream in(read_checked_file<error>(path, "baseline"));  // core/checksums.hpp
   std::vector<baseline_entry> out;
   std::string line;
   std::size_t n = 0;

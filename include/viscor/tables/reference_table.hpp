@@ -19,6 +19,7 @@
 // table_row.hpp, so readers of committed tables do not compile the solvers.
 #pragma once
 
+#include <viscor/core/checksums.hpp>
 #include <viscor/core/field_names.hpp>
 #include <viscor/core/contact_law.hpp>
 #include <viscor/core/detail/exact_decimal.hpp>
@@ -327,12 +328,9 @@ inline csv_table parse_table(const std::string& text, const std::string& file, b
 }
 
 /// Reads and validates a table file; see parse_table.
+/// A table listed in a checksum manifest beside it is checked first (core/checksums.hpp).
 inline csv_table read_table(const std::string& path, bool allow_truncated_tail = false) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw error("cannot read table '" + path + "'");
-  std::stringstream s;
-  s << in.rdbuf();
-  return parse_table(s.str(), path, allow_truncated_tail);
+  return parse_table(read_checked_file<error>(path, "table"), path, allow_truncated_tail);
 }
 
 /// The canonical text of a table: header, then rows sorted by index. Throws

@@ -9,7 +9,7 @@
 #include <string>
 #include <string_view>
 
-namespace viscor::jobs {
+namespace viscor {
 
 /// The SHA-256 digest of `bytes` as 64 lowercase hex digits.
 inline std::string sha256_hex(std::string_view bytes) {
@@ -56,4 +56,4 @@ inline std::string sha256_hex(std::string_view bytes) {
   return out;
 }
 
-}  // namespace viscor::jobs
+}  // namespace viscor

@@ -1,0 +1,114 @@
+// Checksums of data files: a directory may hold a manifest SHA256SUMS (the format
+// of `sha256sum`: 64 hex digits, two spaces, the file name) listing the files in it
+// that viscor committed. A reader checks a listed file against its line before it
+// trusts a single value in it, because a changed digit in a surrogate coefficient or
+// a table's e leaves the file well formed and nothing else would tell. Files not
+// listed (a user's own tables and surrogates) are read as before. viscor's writers
+// keep the line of a file they write into such a directory up to date.
+#pragma once
+
+#include <viscor/core/exceptions.hpp>
+#include <viscor/core/sha256.hpp>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace viscor {
+
+/// The manifest's file name in a data directory.
+inline constexpr const char* checksum_manifest_name = "SHA256SUMS";
+
+/// One line of a manifest.
+struct checksum_entry {
+  std::string sha256;  ///< 64 lowercase hex digits
+  std::string name;    ///< the file's name in the manifest's directory
+};
+
+/// The manifest beside `file` (empty when there is none). Throws parse_error naming the
+/// manifest and the line when a line is not "<64 hex digits>  <name>".
+inline std::vector<checksum_entry> read_checksum_manifest(const std::filesystem::path& file) {
+  const std::filesystem::path manifest = file.parent_path() / checksum_manifest_name;
+  std::ifstream in(manifest, std::ios::binary);
+  std::vector<checksum_entry> entries;
+  if (!in) return entries;
+  std::string line;
+  for (int number = 1; std::getline(in, line); ++number) {
+    if (line.empty()) continue;
+    const bool hex = line.size() > 66 && line.find_first_not_of("0123456789abcdef") == 64 &&
+                     line.compare(64, 2, "  ") == 0;
+    if (!hex)
+      throw parse_error(manifest.string() + ":" + std::to_string(number) + ": not a checksum line ('<sha256>  <name>')");
+    entries.push_back({line.substr(0, 64), line.substr(66)});
+  }
+  return entries;
+}
+
+/// Throws parse_error when `content`, read from `path`, is listed in the manifest
+/// beside it with another SHA-256: the file was changed or damaged after viscor wrote it.
+inline void verify_checksum(const std::string& path, std::string_view content) {
+  const std::filesystem::path file(path);
+  const std::string name = file.filename().string();
+  for (const checksum_entry& e : read_checksum_manifest(file)) {
+    if (e.name != name) continue;
+    if (sha256_hex(content) == e.sha256) return;
+    throw parse_error(path + ": content does not match its SHA-256 in " +
+                      (file.parent_path() / checksum_manifest_name).string() +
+                      ": the file was changed or damaged after viscor wrote it; regenerate it (reference_data/README.md), "
+                      "or restore it from the repository");
+  }
+}
+
+/// The whole file, checked against the manifest beside it (verify_checksum);
+/// throws `Error` naming the file when it cannot be read.
+template <class Error = parse_error>
+std::string read_checked_file(const std::string& path, const std::string& what) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error("cannot open " + what + " '" + path + "'");
+  std::ostringstream s;
+  s << in.rdbuf();
+  if (in.bad()) throw Error("reading " + what + " '" + path + "' failed");
+  const std::string content = s.str();
+  verify_checksum(path, content);
+  return content;
+}
+
+/// After viscor wrote `content` to `path`: if a manifest beside it lists the file, its
+/// line is set to the new SHA-256 (the manifest is rewritten through a temporary file
+/// and a rename). A directory without a manifest is left alone; a file not listed is
+/// not added (the manifest lists what was committed). Throws viscor::error when the
+/// manifest cannot be rewritten.
+inline void update_checksum(const std::string& path, std::string_view content) {
+  const std::filesystem::path file(path);
+  std::vector<checksum_entry> entries = read_checksum_manifest(file);
+  const std::string name = file.filename().string(), digest = sha256_hex(content);
+  bool changed = false;
+  for (checksum_entry& e : entries)
+    if (e.name == name && e.sha256 != digest) e.sha256 = digest, changed = true;
+  if (!changed) return;
+  const std::filesystem::path manifest = file.parent_path() / checksum_manifest_name;
+  const std::string temporary = manifest.string() + ".tmp";
+  {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    for (const checksum_entry& e : entries) out << e.sha256 << "  " << e.name << "\n";
+    out.close();
+    if (!out) {
+      std::remove(temporary.c_str());
+      throw error("cannot rewrite the checksum manifest '" + manifest.string() + "'");
+    }
+  }
+  if (std::rename(temporary.c_str(), manifest.c_str()) != 0) {
+    const int e = errno;
+    std::remove(temporary.c_str());
+    throw error("cannot replace '" + manifest.string() + "': " + std::strerror(e));
+  }
+}
+
+}  // namespace viscor

@@ -1,0 +1,141 @@
+// Committed data files carry checksums that are verified when read
+// (core/checksums.hpp): every manifest under reference_data/ is true and lists
+// every data file of its directory; a copy of a committed surrogate, error map or
+// table with one digit changed is refused with a message naming the file, through
+// the library and the CLI; viscor's own writes keep a listed file's line true.
+#include "test_utils.hpp"
+
+#include <viscor/core/checksums.hpp>
+#include <viscor/jobs/files.hpp>
+#include <viscor/scenes/error_map.hpp>
+#include <viscor/surrogate/cor_surrogate.hpp>
+#include <viscor/tables/reference_table.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path data_root = fs::path(VISCOR_SOURCE_DIR) / "reference_data";
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+struct scratch {
+  fs::path dir;
+  scratch() {
+    std::string name = ::testing::TempDir() + "viscor_checksumsXXXXXX";
+    if (::mkdtemp(name.data())) dir = name;
+  }
+  ~scratch() {
+    std::error_code ec;
+    fs::remove_all(dir, ec);
+  }
+};
+
+/// Copies `file` and the manifest beside it into `to`, then changes the first nonzero
+/// digit of the line after the one holding `after` to another digit: a coefficient or
+/// a value, so that the file stays well formed.
+fs::path damaged_copy(const fs::path& file, const fs::path& to, const std::string& after) {
+  fs::copy_file(file.parent_path() / viscor::checksum_manifest_name, to / viscor::checksum_manifest_name);
+  std::string text = slurp(file);
+  std::size_t at = text.find(after);
+  EXPECT_NE(at, std::string::npos);
+  at = text.find('\n', at + after.size());
+  at = text.find_first_of("123456789", at);
+  text[at] = text[at] == '9' ? '8' : static_cast<char>(text[at] + 1);
+  const fs::path copy = to / file.filename();
+  std::ofstream(copy, std::ios::binary) << text;
+  return copy;
+}
+
+TEST(Checksums, CommittedManifestsAreTrueAndComplete) {
+  const std::pair<const char*, std::set<std::string>> dirs[] = {
+      {"", {".csv"}}, {"proven", {".csv"}}, {"error_maps", {".csv"}}, {"surrogates", {".surrogate", ".csv"}}};
+  for (const auto& [sub, extensions] : dirs) {
+    const fs::path dir = data_root / sub;
+    std::set<std::string> listed;
+    for (const auto& e : viscor::read_checksum_manifest(dir / "x")) {
+      listed.insert(e.name);
+      EXPECT_NO_THROW(viscor::verify_checksum((dir / e.name).string(), slurp(dir / e.name))) << e.name;
+    }
+    EXPECT_FALSE(listed.empty()) << dir;
+    for (const auto& entry : fs::directory_iterator(dir))
+      if (entry.is_regular_file() && extensions.count(entry.path().extension().string()))
+        EXPECT_TRUE(listed.count(entry.path().filename().string()))
+            << entry.path() << " is not in " << (dir / viscor::checksum_manifest_name)
+            << ": run tools/update_checksums.sh";
+  }
+}
+
+TEST(Checksums, ChangedSurrogateCoefficientIsRefused) {
+  scratch s;
+  const fs::path copy = damaged_copy(data_root / "surrogates" / "tsuji.surrogate", s.dir, "\nthreshold");
+  try {
+    viscor::surrogate::read_cor_surrogate(copy.string());
+    FAIL() << "a changed coefficient was read";
+  } catch (const viscor::parse_error& e) {
+    EXPECT_NE(std::string(e.what()).find(copy.string() + ": content does not match its SHA-256"), std::string::npos)
+        << e.what();
+  }
+  // the same bytes without the manifest: a user's file, read as before
+  fs::remove(s.dir / viscor::checksum_manifest_name);
+  EXPECT_NO_THROW(viscor::surrogate::read_cor_surrogate(copy.string()));
+}
+
+TEST(Checksums, ChangedErrorMapAndTableAreRefused) {
+  scratch s;
+  const fs::path map = damaged_copy(data_root / "error_maps" / "tsuji.csv", s.dir, "\n");
+  EXPECT_THROW(viscor::read_error_map(map.string()), viscor::parse_error);
+  fs::remove(s.dir / viscor::checksum_manifest_name);
+  scratch t;
+  const fs::path table = damaged_copy(data_root / "cor_g_sweep.csv", t.dir, "\n1,");
+  EXPECT_THROW(viscor::read_table(table.string()), viscor::parse_error);
+}
+
+// The report: `approx --formula surrogate` used a surrogate whose coefficients
+// were changed; now the CLI refuses it, naming the file.
+TEST(Checksums, CliRefusesAChangedCommittedSurrogate) {
+  scratch s;
+  for (const auto& entry : fs::directory_iterator(data_root / "surrogates"))
+    fs::copy_file(entry.path(), s.dir / entry.path().filename());
+  const fs::path copy = s.dir / "kuwabara_kono.surrogate";
+  fs::remove(copy);
+  fs::remove(s.dir / viscor::checksum_manifest_name);
+  damaged_copy(data_root / "surrogates" / "kuwabara_kono.surrogate", s.dir, "\nthreshold");
+  const auto r = viscor::test::run_cli("", "VISCOR_SURROGATE_DIR='" + s.dir.string() + "' " +
+                                               std::string(VISCOR_CLI_PATH) +
+                                               " approx --model kuwabara_kono --gamma 0.05 --g 1 --formula surrogate");
+  EXPECT_NE(r.status, 0) << r.out;
+  EXPECT_NE(r.err.find("kuwabara_kono.surrogate: content does not match its SHA-256"), std::string::npos) << r.err;
+}
+
+TEST(Checksums, WritesKeepAListedLineTrue) {
+  scratch s;
+  const fs::path file = s.dir / "a.csv", other = s.dir / "b.csv", manifest = s.dir / viscor::checksum_manifest_name;
+  viscor::jobs::write_atomically(file.string(), "first\n");
+  viscor::jobs::write_atomically(other.string(), "other\n");
+  EXPECT_FALSE(fs::exists(manifest));  // no manifest: none is made
+  std::ofstream(manifest) << viscor::sha256_hex("first\n") << "  a.csv\n";
+  viscor::jobs::write_atomically(file.string(), "second\n");
+  EXPECT_EQ(slurp(manifest), viscor::sha256_hex("second\n") + "  a.csv\n");
+  EXPECT_NO_THROW(viscor::verify_checksum(file.string(), "second\n"));
+  viscor::jobs::write_atomically(other.string(), "changed\n");  // not listed: not added
+  EXPECT_EQ(slurp(manifest), viscor::sha256_hex("second\n") + "  a.csv\n");
+  // the known SHA-256 of "abc" (FIPS 180-2, appendix B.1), so the digest itself is right
+  EXPECT_EQ(viscor::sha256_hex("abc"), "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
+}
+
+}  // namespace

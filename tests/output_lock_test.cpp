@@ -1,0 +1,69 @@
+// One writer per output: a second `viscor table` on an output another process is
+// writing stops at once with a message naming it, and writes nothing; the lock goes
+// with its holder. And a scene's impact count is capped before anything is allocated.
+#include "test_utils.hpp"
+
+#include <viscor/jobs/files.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace {
+
+using viscor::test::run_cli;
+
+struct scratch {
+  std::filesystem::path dir;
+  scratch() {
+    std::string name = ::testing::TempDir() + "viscor_lockXXXXXX";
+    if (::mkdtemp(name.data())) dir = name;
+  }
+  ~scratch() {
+    std::error_code ec;
+    std::filesystem::remove_all(dir, ec);
+  }
+};
+
+TEST(OutputLock, SecondWriterStopsWithAMessage) {
+  scratch s;
+  ASSERT_FALSE(s.dir.empty());
+  const std::string spec = (s.dir / "spec.json").string(), out = (s.dir / "t.csv").string();
+  std::ofstream(spec) << R"({"laws": ["linear"], "gamma": [0.05, 0.5], "g": 1, "digits": 20})";
+  {
+    const viscor::jobs::output_lock held(out);  // another writer, as far as the CLI can tell
+    const auto r = run_cli("table " + spec + " -o " + out + " --quiet");
+    EXPECT_NE(r.status, 0);
+    EXPECT_NE(r.err.find("another viscor is writing '" + out + "'"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(out));
+    EXPECT_FALSE(std::filesystem::exists(out + ".partial"));
+  }
+  EXPECT_FALSE(std::filesystem::exists(out + ".lock"));  // the holder removes it
+  const auto r = run_cli("table " + spec + " -o " + out + " --quiet");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(std::filesystem::exists(out));
+  EXPECT_FALSE(std::filesystem::exists(out + ".lock"));
+}
+
+TEST(OutputLock, TwoLocksInOneProcessExcludeEachOther) {
+  scratch s;
+  const std::string out = (s.dir / "t.csv").string();
+  const viscor::jobs::output_lock first(out);
+  EXPECT_THROW(viscor::jobs::output_lock second(out), viscor::error);
+}
+
+TEST(SceneLimits, HugeImpactCountIsRefusedNamingTheField) {
+  scratch s;
+  const std::string scene = (s.dir / "scene.json").string();
+  std::ofstream(scene) << R"({"law": "kuwabara_kono", "bead": {"m": 1e-3, "k": 1e9}, "damping": {"gamma0": 1e-6},
+    "gravity": 9.81, "velocities": {"from": 0.1, "to": 1, "count": 999999999}, "tolerance": 1e-6})";
+  const auto r = run_cli("scene " + scene);
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("velocities.count"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("999999999"), std::string::npos) << r.err;
+}
+
+}  // namespace
