@@ -19,43 +19,6 @@
 
 namespace viscor::jobs {
 
-namespace detail {
-
-/// The decimal exponent of the leading non-zero digit of a decimal text
-/// ("9.6e-01" -> -1, "0.05" -> -2, "12" -> 1); nullopt for zero.
-inline std::optional<int> leading_exponent(const std::string& text) {
-  const std::size_t e = text.find_first_of("eE");
-  const std::string mantissa = text.substr(0, e);
-  const int exponent = e == std::string::npos ? 0 : std::stoi(text.substr(e + 1));
-  int integer_digits = 0;
-  for (char c : mantissa) {
-    if (c == '.') break;
-    integer_digits += c >= '0' && c <= '9';
-  }
-  int k = 0;  // position among the digits
-  for (char c : mantissa) {
-    if (c < '0' || c > '9') continue;
-    if (c != '0') return exponent + integer_digits - 1 - k;
-    ++k;
-  }
-  return std::nullopt;
-}
-
-/// Whether the decimal `value`, certified to `digits` significant digits, lies within
-/// one unit of its last digit of [lower, upper] (a zero value: inside it). The
-/// certificate claims less than half a unit of error after rounding, so a value
-/// further out means that the certificate or the proof is wrong.
-inline bool within_last_digit(const std::string& value, int digits, const std::string& lower,
-                              const std::string& upper) {
-  using viscor::detail::exact_decimal;
-  const exact_decimal x = exact_decimal::parse(value, "certified value");
-  const std::optional<int> lead = leading_exponent(value);
-  const exact_decimal unit = lead ? exact_decimal(1, *lead - digits + 1) : exact_decimal(0, 0);
-  return exact_decimal::parse(lower, "lower bound") - unit <= x && x <= exact_decimal::parse(upper, "upper bound") + unit;
-}
-
-}  // namespace detail
-
 /// The proof's fields of one certified row: ",e_lower,e_upper,one_minus_e_lower,
 /// one_minus_e_upper,proven_digits,outcome_proven", to append to the row's CSV line.
 /// proven_digits is e's (as in `viscor prove --json`); an undecided proof gives empty

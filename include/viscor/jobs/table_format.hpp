@@ -22,7 +22,9 @@
 #include <cstddef>
 #include <fstream>
 #include <sstream>
+#include <optional>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -64,6 +66,39 @@ inline void require_provable(const contact_law& law, const std::string& where) {
 
 namespace detail {
 
+/// The decimal exponent of the leading non-zero digit of a decimal text
+/// ("9.6e-01" -> -1, "0.05" -> -2, "12" -> 1); nullopt for zero.
+inline std::optional<int> leading_exponent(const std::string& text) {
+  const std::size_t e = text.find_first_of("eE");
+  const std::string mantissa = text.substr(0, e);
+  const int exponent = e == std::string::npos ? 0 : std::stoi(text.substr(e + 1));
+  int integer_digits = 0;
+  for (char c : mantissa) {
+    if (c == '.') break;
+    integer_digits += c >= '0' && c <= '9';
+  }
+  int k = 0;  // position among the digits
+  for (char c : mantissa) {
+    if (c < '0' || c > '9') continue;
+    if (c != '0') return exponent + integer_digits - 1 - k;
+    ++k;
+  }
+  return std::nullopt;
+}
+
+/// Whether the decimal `value`, certified to `digits` significant digits, lies within
+/// one unit of its last digit of [lower, upper] (a zero value: inside it). The
+/// certificate claims less than half a unit of error after rounding, so a value
+/// further out means that the certificate or the proof is wrong.
+inline bool within_last_digit(const std::string& value, int digits, const std::string& lower,
+                              const std::string& upper) {
+  using viscor::detail::exact_decimal;
+  const exact_decimal x = exact_decimal::parse(value, "certified value");
+  const std::optional<int> lead = leading_exponent(value);
+  const exact_decimal unit = lead ? exact_decimal(1, *lead - digits + 1) : exact_decimal(0, 0);
+  return exact_decimal::parse(lower, "lower bound") - unit <= x && x <= exact_decimal::parse(upper, "upper bound") + unit;
+}
+
 /// Checks the proof's fields of one row (columns from `first` on); errors name file, line and field.
 inline void check_proven_fields(const viscor::detail::row_checker& c, std::size_t first) {
   const std::size_t e_lo = first, e_hi = first + 1, d_lo = first + 2, d_hi = first + 3, digits = first + 4,
@@ -79,6 +114,25 @@ inline void check_proven_fields(const viscor::detail::row_checker& c, std::size_
   if (c.at(outcome) != c.at(6)) c.fail(outcome, "contradicts the certified outcome '" + c.at(6) + "'");
   for (const auto& [lo, hi] : {std::pair{e_lo, e_hi}, std::pair{d_lo, d_hi}})
     if (!(c.decimal(lo) <= c.decimal(hi))) c.fail(hi, "the upper bound is below the lower bound");
+  // The row must agree with itself: the certified e and 1 - e lie in their proven
+  // enclosures to within a unit of their last certified digit (as proven_rows.hpp
+  // checks when it writes them), and the enclosure is narrow enough for the proven
+  // digits it claims (both ends round to the same d-digit decimal, so they are
+  // within one unit of the d-th digit).
+  const int certified = static_cast<int>(c.integer(11, max_working_digits));
+  for (const auto& [value, lo, hi] : {std::tuple{std::size_t(7), e_lo, e_hi}, std::tuple{std::size_t(8), d_lo, d_hi}})
+    if (!within_last_digit(c.at(value), certified, c.at(lo), c.at(hi)))
+      c.fail(value, "lies outside its own proven enclosure [" + c.at(lo) + ", " + c.at(hi) + "] by more than a unit "
+                    "of its last certified digit");
+  const int proven = static_cast<int>(c.integer(digits, max_working_digits));
+  if (proven > 0) {
+    using viscor::detail::exact_decimal;
+    const std::optional<int> lead = leading_exponent(c.at(e_hi));
+    const exact_decimal unit = lead ? exact_decimal(1, *lead - proven + 1) : exact_decimal(0, 0);
+    if (exact_decimal::parse(c.at(e_hi), "e_upper") - exact_decimal::parse(c.at(e_lo), "e_lower") > unit)
+      c.fail(digits, "claims " + c.at(digits) + " proven digits, but the enclosure of e is wider than a unit of "
+                     "that digit");
+  }
 }
 
 }  // namespace detail
@@ -183,12 +237,8 @@ struct table_format {
   }
 
  private:
-  static std::string file_text(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw error("cannot read table '" + path + "'");
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
+  static std::string file_text(const std::string& path) {  // checked against a manifest (core/checksums.hpp)
+    return read_checked_file<error>(path, "table");
   }
 };
 

@@ -181,6 +181,7 @@ inline table_run_summary make_cor_table(const table_spec& table, const table_run
   for (const auto& p : *points) job.indices.push_back(p.index);
   const table_settings settings = table_settings::from(spec);
   job.compute_line = [points, settings](std::size_t i) { return csv_line(compute_row((*points)[i], settings)); };
+  job.grid_columns = [points](std::size_t i) { return csv_grid_columns((*points)[i]); };
 #ifdef VISCOR_WITH_ENCLOSE
   if (table.proven)
     job.compute_line = [points, settings, digits = detail::proof_digits(spec.digits), shift = run.certified_e_shift](std::size_t i) {

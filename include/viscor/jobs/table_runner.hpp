@@ -51,6 +51,9 @@ struct table_job {
   std::string output;                   ///< OUT.csv
   std::vector<std::int64_t> indices;    ///< grid indices of the rows of this run (its shard), ascending
   std::function<std::string(std::size_t)> compute_line;  ///< CSV line of row indices[i] (thread-safe)
+  /// The grid columns ("law,alpha,beta,gamma,g", fields 1-5) row indices[i] must have:
+  /// --resume checks the rows it keeps against them. Empty: not checked.
+  std::function<std::string(std::size_t)> grid_columns;
   /// Sidecar fields (version, kind, spec, shard, scalar, method, ...); the
   /// table_fingerprint of them must match for --resume and merge.
   json provenance;
@@ -242,6 +245,16 @@ inline table_run_summary run_table_job(const table_job& job) {
       if (!done.insert(row.index).second)
         throw parse_error(partial + ":" + std::to_string(row.line) + ": field index: row " +
                           std::to_string(row.index) + " appears twice");
+      if (job.grid_columns) {  // a row kept must be the grid point its index names
+        const auto at = std::lower_bound(job.indices.begin(), job.indices.end(), row.index);
+        const std::string expected = job.grid_columns(static_cast<std::size_t>(at - job.indices.begin()));
+        const std::string found = row.fields.at(1) + "," + row.fields.at(2) + "," + row.fields.at(3) + "," +
+                                  row.fields.at(4) + "," + row.fields.at(5);
+        if (found != expected)
+          throw parse_error(partial + ":" + std::to_string(row.line) + ": fields law..g: row " +
+                            std::to_string(row.index) + " is (" + found + "), not the grid point (" + expected +
+                            ") of this spec; delete the partial files to start afresh");
+      }
       earlier.push_back(row);
     }
     // Rewrite without a line cut short by a kill, so appends start on a fresh line.

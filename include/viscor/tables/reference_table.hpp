@@ -227,6 +227,19 @@ class row_checker {
   const std::vector<std::string>& m_fields;
 };
 
+/// The number of significant digits written in a decimal text ("5.920e-01" -> 4, "0.05" -> 1).
+inline int significant_digits(const std::string& text) {
+  const std::string mantissa = text.substr(0, text.find_first_of("eE"));
+  int count = 0;
+  bool leading = true;
+  for (char c : mantissa) {
+    if (c < '0' || c > '9') continue;
+    if (c != '0') leading = false;
+    if (!leading) ++count;
+  }
+  return count;
+}
+
 inline void check_cor_row(const row_checker& c) {
   // index,law,alpha,beta,gamma,g,outcome,e,one_minus_e,contact_time,max_compression,digits,method
   c.law();
@@ -242,8 +255,13 @@ inline void check_cor_row(const row_checker& c) {
   }
   c.optional_non_negative(9);
   c.optional_non_negative(10);
-  c.integer(11, max_working_digits);
+  const std::int64_t certified = c.integer(11, max_working_digits);
   c.one_of(12, {"exact", "certified"});
+  // A certified e carries its certified digits: a row that claims more than it prints
+  // contradicts itself (an edited digits field).
+  if (c.at(12) == "certified" && c.at(6) == "rebound" && c.at(7) != "1" && significant_digits(c.at(7)) < certified)
+    c.fail(11, "claims " + c.at(11) + " certified digits, but e = " + c.at(7) + " is written with " +
+                   std::to_string(significant_digits(c.at(7))));
 }
 
 inline void check_sticking_row(const row_checker& c) {
