@@ -148,10 +148,15 @@ using double_array = py::array_t<double, py::array::c_style | py::array::forceca
 
 // Scaled (gamma, g) of flat arrays of physical inputs of one size, in double. The
 // bead is (m, k), or a material (youngs_modulus, poisson_ratio, radius, and m or
-// density): absent arrays are empty. Refuses the first bad point by its index.
+// density) on a wall (rigid, or wall_youngs_modulus and wall_poisson_ratio) or, for
+// contact "pair", meeting a bead like it or the other_* one: absent arrays are
+// empty. Refuses the first bad point by its index.
 py::tuple scaled_arrays(const std::string& name, const std::string& alpha, const std::string& beta,
-                        const std::map<std::string, double_array>& columns) {
+                        const std::map<std::string, double_array>& columns, const std::string& contact) {
   const contact_law law = jobs::resolve_law(name, alpha, beta);
+  if (contact != "wall" && contact != "pair")
+    throw invalid_parameter("evaluate: contact must be 'wall' or 'pair', got '" + contact + "'");
+  const dem::contact_kind kind = contact == "pair" ? dem::contact_kind::pair : dem::contact_kind::wall;
   const auto column = [&](const char* key) -> const double* {
     const auto it = columns.find(key);
     return it == columns.end() ? nullptr : it->second.data();
@@ -163,6 +168,9 @@ py::tuple scaled_arrays(const std::string& name, const std::string& alpha, const
   const double *m = column("m"), *k = column("k"), *v0 = column("v0"), *gamma0 = column("gamma0"),
                *gravity = column("gravity"), *force = column("force"), *E = column("youngs_modulus"),
                *nu = column("poisson_ratio"), *radius = column("radius"), *density = column("density");
+  const double *wall_E = column("wall_youngs_modulus"), *wall_nu = column("wall_poisson_ratio"),
+               *other_E = column("other_youngs_modulus"), *other_nu = column("other_poisson_ratio"),
+               *other_radius = column("other_radius"), *other_density = column("other_density");
   py::array_t<double> gamma(n), g(n);
   double* pg = gamma.mutable_data();
   double* pgg = g.mutable_data();
@@ -172,13 +180,17 @@ py::tuple scaled_arrays(const std::string& name, const std::string& alpha, const
     for (; i < n; ++i) {
       physical_parameters<double> p;
       if (E) {
+        dem::contact_partner<double> partner;
+        if (wall_E) partner.wall = elastic_material<double>{wall_E[i], wall_nu[i]};
+        if (other_E) partner.other = dem::bead_material<double>{other_E[i], other_nu[i], other_radius[i], other_density[i]};
         std::tie(p.m, p.k) = jobs::bead_of_material<double>(
             law, E[i], nu[i], radius[i], m ? std::optional<double>(m[i]) : std::nullopt,
-            density ? std::optional<double>(density[i]) : std::nullopt);
+            density ? std::optional<double>(density[i]) : std::nullopt, kind, partner);
       } else {
         p.m = m[i], p.k = k[i];
       }
-      p.v0 = v0[i], p.gamma0 = gamma0[i], p.gravity = gravity[i], p.force = force ? force[i] : 0.0;
+      p.v0 = v0[i], p.gamma0 = gamma0[i], p.force = force ? force[i] : 0.0;
+      p.gravity = kind == dem::contact_kind::pair ? 0.0 : gravity[i];  // both beads fall alike
       p.validate();
       const scaled_parameters<double> s = to_scaled(law, p);
       pg[i] = s.gamma, pgg[i] = s.g;
@@ -260,6 +272,7 @@ void bind_commands(py::module_& m) {
       py::arg("inputs"), py::arg("output"),
       "Merges shard tables into one (jobs/table_jobs.hpp, as `viscor table merge`); returns its rows.");
   m.def("scaled_arrays", &scaled_arrays, py::arg("name"), py::arg("alpha"), py::arg("beta"), py::arg("columns"),
+        py::arg("contact") = "wall",
         "Flat float64 arrays of physical inputs -> (gamma, g) arrays by the report's scaling, in double.");
 }
 

@@ -34,6 +34,24 @@ def _scaled_from_physical(name, a, b, tol, physical):
     """(gamma, g, tol) arrays from arrays of physical inputs, broadcast together."""
     import numpy as np
 
+    contact = physical.pop("contact", "wall")
+    if not isinstance(contact, str):
+        raise TypeError(f"evaluate: contact must be 'wall' or 'pair', got {contact!r}")
+    partners = {"wall": ("wall_youngs_modulus", "wall_poisson_ratio"),
+                "other": ("other_youngs_modulus", "other_poisson_ratio", "other_radius", "other_density")}
+    for what, keys in partners.items():
+        given = [k for k in keys if k in physical]
+        if given and len(given) != len(keys):
+            raise _viscor.InvalidParameter(f"evaluate: the {what} needs all of {', '.join(keys)} (given: "
+                                           f"{', '.join(given)})")
+        if given and "youngs_modulus" not in physical:
+            raise _viscor.InvalidParameter(f"evaluate: {given[0]} needs the bead as a material (youngs_modulus, ...)")
+    if contact == "pair" and "youngs_modulus" not in physical:
+        raise _viscor.InvalidParameter("evaluate: contact='pair' needs the beads as materials (youngs_modulus, ...)")
+    if "wall_youngs_modulus" in physical and contact != "wall":
+        raise _viscor.InvalidParameter("evaluate: wall_youngs_modulus describes a wall, not contact='pair'")
+    if "other_youngs_modulus" in physical and contact != "pair":
+        raise _viscor.InvalidParameter("evaluate: other_youngs_modulus describes the second bead of contact='pair'")
     bead = ("youngs_modulus", "poisson_ratio", "radius") if "youngs_modulus" in physical else ("m", "k")
     for needed in bead + ("v0", "gamma0", "gravity"):
         if needed not in physical:
@@ -54,12 +72,14 @@ def _scaled_from_physical(name, a, b, tol, physical):
                                        + ")") from error
     shape = broadcast[0].shape
     columns = {k: np.ascontiguousarray(x).reshape(-1) for k, x in zip(names, broadcast[:-1])}
-    gamma, g = _viscor.scaled_arrays(name, a, b, columns)
+    gamma, g = _viscor.scaled_arrays(name, a, b, columns, contact)
     return gamma.reshape(shape), g.reshape(shape), broadcast[-1]
 
 
 #: The physical inputs evaluate takes instead of gamma and g (as ``viscor cor`` names them).
-_PHYSICAL = ("m", "k", "v0", "gamma0", "gravity", "force", "youngs_modulus", "poisson_ratio", "radius", "density")
+_PHYSICAL = ("m", "k", "v0", "gamma0", "gravity", "force", "youngs_modulus", "poisson_ratio", "radius", "density",
+             "contact", "wall_youngs_modulus", "wall_poisson_ratio", "other_youngs_modulus", "other_poisson_ratio",
+             "other_radius", "other_density")
 
 
 def evaluate(law=None, gamma=None, g=0.0, tol=1e-6, *, alpha=None, beta=None, relative=False, error_maps="default",
@@ -80,7 +100,10 @@ def evaluate(law=None, gamma=None, g=0.0, tol=1e-6, *, alpha=None, beta=None, re
     Instead of gamma and g, the physical inputs as ``viscor cor`` takes them, each
     a number or an array (broadcast together with tol): m and k, or
     youngs_modulus, poisson_ratio, radius and m or density; v0, gamma0, gravity
-    (required: 0 for none) and force (default 0). They are scaled in double.
+    (required: 0 for none) and force (default 0); a wall of its own material
+    (wall_youngs_modulus, wall_poisson_ratio), or contact='pair' (a second bead
+    like the first, or other_youngs_modulus, other_poisson_ratio, other_radius,
+    other_density; gravity drops out). They are scaled in double.
 
     Raises InvalidParameter naming the first bad point (NaN, gamma < 0, ...).
     """

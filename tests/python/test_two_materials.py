@@ -44,6 +44,19 @@ class TwoMaterials(unittest.TestCase):
         with self.assertRaises(viscor.InvalidParameter):
             viscor.cor("tsuji", v0="0.5", gamma0="1e-8", gravity="9.81", other_radius="1e-3", **GLASS)
 
+    def test_evaluate_takes_the_pair(self):
+        import numpy as np
+        v0 = np.array([0.1, 0.5, 1.0])
+        r = viscor.evaluate("tsuji", tol=1e-10, v0=v0, gamma0=1e-8, gravity=9.81, **GLASS, **STEEL_BEAD)
+        for i, v in enumerate(v0):
+            one = viscor.cor("tsuji", digits=20, v0=repr(float(v)), gamma0="1e-8", gravity="9.81", **GLASS, **STEEL_BEAD)
+            self.assertAlmostEqual(float(r.e[i]), float(one.e), delta=1e-10)
+        plate = viscor.evaluate("tsuji", tol=1e-10, v0=0.5, gamma0=1e-8, gravity=9.81, **GLASS, **STEEL_PLATE)
+        one = viscor.cor("tsuji", digits=20, v0="0.5", gamma0="1e-8", gravity="9.81", **GLASS, **STEEL_PLATE)
+        self.assertAlmostEqual(float(plate.e), float(one.e), delta=1e-10)
+        with self.assertRaises(viscor.InvalidParameter):
+            viscor.evaluate("tsuji", v0=0.5, gamma0=1e-8, gravity=9.81, wall_youngs_modulus=2e11, **GLASS)
+
     @unittest.skipUnless(CLI, "VISCOR_CLI not set")
     def test_cor_same_as_cli(self):
         r = viscor.cor("tsuji", digits=20, v0="0.5", gamma0="1e-8", gravity="9.81", **GLASS, **STEEL_PLATE)
