@@ -49,8 +49,18 @@ def summary(paths):
         print(f"{key[0]:22s} {key[1]:>5s} {key[2]:8s} {key[3]:6d} {key[4]:8s} {len(v):5d} "
               f"{1000 * statistics.fmean(v):8.1f} {1000 * statistics.median(v):8.1f} {1000 * max(v):8.1f}")
     by = collections.defaultdict(list)
+    per_law = collections.defaultdict(list)
     for (law, g, outcome, digits, method), v in groups.items():
         by[(digits, method)].extend(v)
+        per_law[(law, digits, method)].extend(v)
+        per_law[("all laws", digits, method)].extend(v)
+    columns = sorted(by)
+    print("\nmean ms a row by law (all g and outcomes)")
+    print(f"{'law':22s}" + "".join(f" {f'{d} {m}':>12s}" for d, m in columns))
+    laws = list(dict.fromkeys(k[0] for k in sorted(groups))) + ["all laws"]
+    for law in laws:
+        print(f"{law:22s}" + "".join(f" {1000 * statistics.fmean(per_law[(law, d, m)]):12.1f}"
+                                     if per_law[(law, d, m)] else f" {'':>12s}" for d, m in columns))
     print()
     for (digits, method), v in sorted(by.items()):
         print(f"all laws, {digits} digits, {method}: {len(v)} rows, mean {1000 * statistics.fmean(v):.1f} ms a row")
