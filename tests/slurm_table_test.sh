@@ -30,6 +30,8 @@ missing=()
 for tool in munged slurmctld slurmd sbatch scontrol scancel squeue; do
   command -v "$tool" > /dev/null 2>&1 || [ -x "/usr/sbin/$tool" ] || missing+=("$tool")
 done
+# slurmd starts job steps as their user, which needs root (CI runs as root).
+[ "$(id -u)" -eq 0 ] || missing+=("root (slurmd must run as root)")
 if [ "${#missing[@]}" -gt 0 ]; then
   if [ "${VISCOR_REQUIRE_ALL_DEPS:-0}" = "1" ]; then
     echo "slurm_table_test: [${SECONDS}s] FAIL: missing (required by VISCOR_REQUIRE_ALL_DEPS): ${missing[*]}" \
@@ -220,7 +222,8 @@ echo "slurm_table_test: [${SECONDS}s] task $victim stopped (FAILED) with $kept f
 # Requeue it: the same array task runs the same script again, and --resume continues.
 echo "slurm_table_test: [${SECONDS}s] requeue"; scontrol requeue "${job}_${victim}" || fail "scontrol requeue ${job}_${victim}"
 # Slurm delays a requeued job's start by a few minutes; the test asks for it at once.
-scontrol update JobId="${job}_${victim}" StartTime=now || fail "scontrol update StartTime=now"
+scontrol update JobId="${job}_${victim}" StartTime=now ||
+  echo "slurm_table_test: [${SECONDS}s] note: StartTime=now not set (already started?)"
 all_ended() {
   local t
   for t in $(seq 0 $((tasks - 1))); do task_ended "$t" || return 1; done
