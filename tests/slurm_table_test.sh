@@ -12,9 +12,46 @@
 # Exit 77 (skipped) when Slurm or munge is missing, unless VISCOR_REQUIRE_ALL_DEPS=1
 # (CMake's VISCOR_REQUIRE_ALL_DEPS=ON): then that is a failure.
 # The cluster (munged, slurmctld, slurmd: private key, socket, ports, state and spool
-# directories in a temporary directory) is stopped and removed on every exit.
+# directories in a temporary directory) is stopped and removed on every exit: by a
+# trap, and by a reaper in its own session that outlives a killed test.
 set -uo pipefail
 
+# Stops what the test started in WORK (the job, the daemons whose ids are in
+# WORK/daemons.pid) and removes WORK; does nothing when WORK is gone.
+cleanup_cluster() {
+  local work=$1 job pid pids=()
+  [ -d "$work" ] || return 0
+  if [ -f "$work/job.id" ] && [ -f "$work/slurm.conf" ]; then
+    # the job's processes run under slurmstepd, which outlives slurmd: cancel, then wait
+    job=$(cat "$work/job.id")
+    SLURM_CONF="$work/slurm.conf" scancel --quiet "$job" > /dev/null 2>&1
+    for _ in $(seq 100); do
+      [ -z "$(SLURM_CONF="$work/slurm.conf" squeue --noheader --jobs="$job" --states=RUNNING,COMPLETING 2> /dev/null)" ] &&
+        break
+      sleep 0.2
+    done
+  fi
+  [ -f "$work/daemons.pid" ] && mapfile -t pids < "$work/daemons.pid"
+  for pid in "${pids[@]}"; do kill -TERM "$pid" 2> /dev/null; done
+  for _ in $(seq 50); do
+    local alive=0
+    for pid in "${pids[@]}"; do kill -0 "$pid" 2> /dev/null && alive=1; done
+    [ "$alive" = 0 ] && break
+    sleep 0.1
+  done
+  for pid in "${pids[@]}"; do kill -KILL "$pid" 2> /dev/null; done
+  rm -rf "$work"
+}
+
+# The reaper (started below in its own session): waits for the test's shell to end,
+# however it ends (a trap does not run on SIGKILL, as at a ctest timeout), then cleans up.
+if [ "${1:-}" = --reap ]; then
+  while kill -0 "$2" 2> /dev/null; do sleep 0.5; done
+  cleanup_cluster "$3"
+  exit 0
+fi
+
+self="$(cd "$(dirname "$0")" && pwd)/$(basename "$0")"
 source_dir=$(cd "$1" && pwd)
 build_dir=$(cd "$2" && pwd)
 viscor="$build_dir/viscor"  # BUILD_DIR: the directory of the viscor program
@@ -46,7 +83,7 @@ PATH="$PATH:/usr/sbin:/sbin"
 
 work=$(mktemp -d "${TMPDIR:-/tmp}/viscor-slurm.XXXXXX")
 chmod 700 "$work"
-pids=()
+setsid bash "$self" --reap $$ "$work" < /dev/null > /dev/null 2>&1 &
 
 dump_logs() {
   for log in "$work"/*.out "$work"/munged.log "$work"/slurmctld.log "$work"/slurmd.log "$work"/run/slurm-*.out; do
@@ -56,26 +93,7 @@ dump_logs() {
   done
 }
 
-cleanup() {
-  if [ -n "${SLURM_CONF:-}" ] && [ -f "$SLURM_CONF" ] && [ -n "${job:-}" ]; then
-    # the job's processes run under slurmstepd, which outlives slurmd: cancel, then wait
-    scancel --quiet "$job" > /dev/null 2>&1
-    for _ in $(seq 100); do
-      [ -z "$(squeue --noheader --jobs="$job" --states=RUNNING,COMPLETING 2> /dev/null)" ] && break
-      sleep 0.2
-    done
-  fi
-  local pid
-  for pid in "${pids[@]}"; do kill -TERM "$pid" 2> /dev/null; done
-  for _ in $(seq 50); do
-    local alive=0
-    for pid in "${pids[@]}"; do kill -0 "$pid" 2> /dev/null && alive=1; done
-    [ "$alive" = 0 ] && break
-    sleep 0.1
-  done
-  for pid in "${pids[@]}"; do kill -KILL "$pid" 2> /dev/null; done
-  rm -rf "$work"
-}
+cleanup() { cleanup_cluster "$work"; }
 trap cleanup EXIT
 trap 'exit 1' INT TERM HUP
 
@@ -104,7 +122,7 @@ munge_socket="$work/munge/munge.socket"
 munged --foreground --force --key-file="$work/munge/munge.key" --socket="$munge_socket" \
        --pid-file="$work/munge/munged.pid" --seed-file="$work/munge/munged.seed" \
        --log-file="$work/munged.log" > "$work/munged.out" 2>&1 &
-pids+=($!)
+echo $! >> "$work/daemons.pid"
 wait_for 20 "munged's socket" test -S "$munge_socket"
 
 # --- slurm.conf: this node, private ports and directories ----------------------------
@@ -150,9 +168,9 @@ PartitionName=viscor Nodes=$node Default=YES MaxTime=INFINITE State=UP
 EOF
 
 slurmctld -D -i -f "$SLURM_CONF" > "$work/slurmctld.out" 2>&1 &
-pids+=($!)
+echo $! >> "$work/daemons.pid"
 slurmd -D -f "$SLURM_CONF" > "$work/slurmd.out" 2>&1 &
-pids+=($!)
+echo $! >> "$work/daemons.pid"
 node_idle() { scontrol show node "$node" 2> /dev/null | grep -Eq "State=IDLE"; }
 wait_for 60 "node $node to be IDLE (slurmctld and slurmd up)" node_idle
 
@@ -191,6 +209,7 @@ submit=$(sbatch --parsable --array=0-$((tasks - 1)) --cpus-per-task=1 --time=00:
          --output="$work/run/slurm-%A_%a.out" --chdir="$work/run" table.sbatch 2>&1) ||
   fail "sbatch failed: $submit"
 job=${submit%%;*}
+echo "$job" > "$work/job.id"
 echo "slurm_table_test: [${SECONDS}s] submitted job array $job (tasks 0-$((tasks - 1)))"
 
 task_state() { scontrol show job "${job}_$1" 2> /dev/null | sed -n 's/.*JobState=\([A-Z_]*\).*/\1/p' | head -n 1; }
