@@ -88,6 +88,8 @@ def main():
     p.add_argument("--digits", default="50")
     p.add_argument("--method", default="proven")
     p.add_argument("--shards", default="32", help="comma-separated shard counts")
+    p.add_argument("--max-ratio", type=float, default=None,
+                   help="exit 1 when an interleaved slowest/mean (full table) exceeds this")
     a = p.parse_args()
 
     sampled = load_costs(a.costs, a.digits, a.method)
@@ -97,11 +99,15 @@ def main():
           f"{a.method} at {a.digits} digits, {sum(costs):.1f} CPU-s in all, {sum(costs) / a.rows * 1000:.1f} ms a row")
     print("        full table (interpolated)       the measured rows alone")
     print("shards  interleaved  contiguous         interleaved  contiguous   (slowest shard / mean)")
+    worst = 0.0
     for n in (int(x) for x in a.shards.split(",")):
+        worst = max(worst, ratio(shard_costs(costs, n, "interleaved")))
         print(f"{n:6d}  {ratio(shard_costs(costs, n, 'interleaved')):11.3f}  "
               f"{ratio(shard_costs(costs, n, 'contiguous')):10.3f}         "
               f"{ratio(shard_costs(measured, n, 'interleaved')):11.3f}  "
               f"{ratio(shard_costs(measured, n, 'contiguous')):10.3f}")
+    if a.max_ratio is not None and worst > a.max_ratio:
+        sys.exit(f"shard_balance: interleaved slowest/mean {worst:.3f} exceeds {a.max_ratio}")
 
 
 if __name__ == "__main__":
