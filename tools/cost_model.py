@@ -7,6 +7,10 @@ Input: CSV files of per-row CPU times written by tools/cost_measure.py.
       mean, median and largest CPU-seconds per row by law, g (the region: g = 0,
       small g, g = 1 near and past sticking), outcome, digits and method.
 
+  tools/cost_model.py threshold COSTS.csv [--digits 50 --method proven]
+      the cost of the sampled rows beside each switch from rebound to stick (the
+      sticking threshold), against the median of their law and g block.
+
   tools/cost_model.py sum COSTS.csv --block 1001 --every 4 [--digits 50 --method proven]
       the summed cost of every 4th sampled row of each law and g block: what a
       table of those rows should cost, to compare with its measured CPU time.
@@ -66,6 +70,26 @@ def summary(paths):
         print(f"all laws, {digits} digits, {method}: {len(v)} rows, mean {1000 * statistics.fmean(v):.1f} ms a row")
 
 
+def threshold(a):
+    """The sampled rows on either side of each rebound/stick switch of a law and g block,
+    against the block's median cost."""
+    blocks = collections.defaultdict(list)
+    with open(a.costs) as f:
+        for r in csv.DictReader(f):
+            if r["digits"] == str(a.digits) and r["method"] == a.method:
+                blocks[(r["law"], r["g"])].append(r)
+    for (law, g), rs in blocks.items():
+        rs.sort(key=lambda r: int(r["index"]))
+        median = statistics.median(float(r["cpu_seconds"]) for r in rs)
+        for i in range(1, len(rs)):
+            if rs[i]["outcome"] != rs[i - 1]["outcome"]:
+                near = rs[max(0, i - a.around):i + a.around]
+                print(f"{law} g = {g}: {rs[i - 1]['outcome']} -> {rs[i]['outcome']} between gamma = "
+                      f"{rs[i - 1]['gamma']} and {rs[i]['gamma']}; block median {1000 * median:.1f} ms; beside it: " +
+                      ", ".join(f"{r['gamma']} {1000 * float(r['cpu_seconds']):.1f} ms "
+                                f"({float(r['cpu_seconds']) / median:.2f}x)" for r in near))
+
+
 def sum_every(a):
     """The summed cost of every k-th sampled row of each block (block: --block table rows)."""
     rows = load_costs(a.costs, a.digits, a.method)
@@ -123,8 +147,15 @@ def main():
     e.add_argument("--every", type=int, required=True)
     e.add_argument("--digits", default="50")
     e.add_argument("--method", default="proven")
+    t = sub.add_parser("threshold")
+    t.add_argument("costs")
+    t.add_argument("--digits", default="50")
+    t.add_argument("--method", default="proven")
+    t.add_argument("--around", type=int, default=3, help="sampled rows on each side")
     a = p.parse_args()
-    if a.command == "summary":
+    if a.command == "threshold":
+        threshold(a)
+    elif a.command == "summary":
         summary(a.costs)
     elif a.command == "sum":
         sum_every(a)
