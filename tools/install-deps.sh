@@ -28,6 +28,7 @@ packages=(
   pybind11-dev python3-dev  # Python module viscor (docs/python.md)
   python3-numpy python3-mpmath  # its vectorised evaluate and tests; Result.mpf
   yade                      # DEM program run by tests/yade_drop_*test.cpp (docs/dem.md, YADE 2023.02a)
+  slurm-wlm munge           # a one-node Slurm cluster for the job array of docs/tables.md (tests/slurm_table_test.sh)
   python3-distributed       # viscor.dask: tables, points and evaluate on a Dask cluster (tests/python/test_dask.py)
   clang libclang-rt-14-dev  # libFuzzer and clang's sanitizers: tests/fuzz (docs/robustness.md)
   libc++-14-dev libc++abi-14-dev  # the fuzzers' C++ library (tests/fuzz/CMakeLists.txt says why)
