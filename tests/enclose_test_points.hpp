@@ -1,5 +1,6 @@
-// Shared by enclose_test and enclose_slow_test: a fixed-seed sample of (gamma, g)
-// for the linear law and the comparison of proofs with the closed form.
+// Shared by enclose_test, enclose_slow_test and enclose_proof_mutation_test: a
+// fixed-seed sample of (gamma, g) for the linear law and the comparison of proofs
+// with the closed form.
 #pragma once
 
 #include <viscor/enclose/proven_linear.hpp>

@@ -49,10 +49,12 @@ std::optional<ball> enclose_crossing_in(const step_enclosure& step, std::size_t 
   const auto over = state_over(step, t);
   if (!over) return std::nullopt;
   const ball slope_range = derivative(*over);
-  if (!(slope_range.positive() || slope_range.negative())) return std::nullopt;
+  // Test seam (mutation_seam.hpp): crossing_unproven skips both sign proofs.
+  const bool unproven = proof_mutated(proof_mutation::crossing_unproven);
+  if (!unproven && !(slope_range.positive() || slope_range.negative())) return std::nullopt;
   const ball start = step.at(i, from), end = step.at(i, to);
   const bool falls = start.positive() && end.negative(), rises = start.negative() && end.positive();
-  if (!(falls || rises) || (falls && !slope_range.negative()) || (rises && !slope_range.positive()))
+  if (!unproven && (!(falls || rises) || (falls && !slope_range.negative()) || (rises && !slope_range.positive())))
     return std::nullopt;
   // Interval Newton: N(T) = m - x_i(m) / x_i'(T) contains the (unique) root in T;
   // where it does not shrink T by a quarter (a wide T: the Horner enclosure over a

@@ -20,6 +20,7 @@
 #pragma once
 
 #include <viscor/enclose/ball.hpp>
+#include <viscor/enclose/mutation_seam.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -41,10 +42,6 @@ concept ball_system = requires(const S& s, const std::vector<ball>& x, std::size
   { s.size() } -> std::convertible_to<std::size_t>;
   { s.jet(x, order) } -> std::same_as<ball_jet>;
 };
-
-/// Test seam: the factor the remainder is multiplied by (1 in every real use). A
-/// factor below 1 under-estimates the remainder; tests show the proof then fails.
-inline thread_local double remainder_factor_for_tests = 1;
 
 /// x(t) of one component, sum_{k<=p} c_k t^k + R t^(p+1), for t a ball inside [0, h].
 inline ball evaluate_with_remainder(const std::vector<ball>& c, const ball& remainder, const ball& t) {
@@ -151,13 +148,26 @@ step_enclosure validated_step(const S& system, const ball_jet& coefficients, con
     for (std::size_t i = 0; i < n; ++i) {
       remainder[i] = on_box[i][order + 1];
       candidate[i] = polynomial[i] + remainder[i] * tail_power;
-      inside = inside && box[i].contains_interior(candidate[i]);
+      inside = inside && (proof_mutated(proof_mutation::box_test_skipped) || box[i].contains_interior(candidate[i]));
     }
     if (inside) {
-      if (remainder_factor_for_tests != 1) {
+      // Test seam (mutation_seam.hpp): dead code unless VISCOR_PROOF_MUTATIONS.
+      if (proof_mutated(proof_mutation::remainder_scaled)) {
         ball factor;
-        arb_set_d(factor.get(), remainder_factor_for_tests);
-        for (auto& r : remainder) r = r * factor;
+        arb_set_d(factor.get(), proof_mutation_factor());
+        for (std::size_t i = 0; i < n; ++i) {
+          remainder[i] = remainder[i] * factor;
+          candidate[i] = polynomial[i] + remainder[i] * tail_power;
+        }
+      }
+      if (proof_mutated(proof_mutation::remainder_from_point)) {
+        std::vector<ball> start(n);
+        for (std::size_t i = 0; i < n; ++i) start[i] = step.coefficients[i][0];
+        const ball_jet on_start = system.jet(start, order + 1);
+        for (std::size_t i = 0; i < n; ++i) {
+          remainder[i] = on_start[i][order + 1];
+          candidate[i] = polynomial[i] + remainder[i] * tail_power;
+        }
       }
       step.remainder = std::move(remainder);
       step.range = std::move(candidate);
