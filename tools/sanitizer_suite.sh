@@ -29,7 +29,7 @@ sanitized_tests=(
   taylor_series_test                                         # ode
   solve_impact_test                                          # impact
   certification_test                                         # certify
-  enclose_test enclose_cli_test                              # enclose (Arb), viscor prove
+  enclose_test enclose_cli_test enclose_proof_mutation_test  # enclose (Arb), viscor prove
   integrals_test                                             # approx
   surrogate_test corrupt_files_test                          # surrogate; surrogate and table files (tables)
   scene_test                                                 # scenes
