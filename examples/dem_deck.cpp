@@ -26,9 +26,9 @@ int main() {
 
   const dem::dem_deck<Real> deck = dem::dem_deck_for(model, impact, target_e);
   dem::deck_strings entries;
-  entries.youngs_modulus = viscor::to_decimal_string(deck.youngs_modulus);
-  entries.poisson_ratio = viscor::to_decimal_string(deck.poisson_ratio);
-  entries.damping = viscor::to_decimal_string(deck.damping);
+  entries.youngs_modulus = dem::deck_number(deck.youngs_modulus);  // the shortest decimal of the double
+  entries.poisson_ratio = dem::deck_number(deck.poisson_ratio);
+  entries.damping = dem::deck_number(deck.damping);
   const dem::drop_timing<Real> timing = dem::drop_timing_for(model, impact, deck);
   std::cout << dem::deck_snippet(model, impact.kind, entries)
             << "# contact time " << timing.contact_time << " s; time step T/" << timing.steps_per_time_scale << " = "

@@ -60,7 +60,7 @@ TEST(scene, resolution_errors_name_the_field) {
   EXPECT_NE(message(d).find("bead.density must be > 0"), std::string::npos) << message(d);
   d = steel_bead();
   d.poisson_ratio = "0.6";
-  EXPECT_NE(message(d).find("bead.poisson_ratio must be in (-1, 1/2)"), std::string::npos) << message(d);
+  EXPECT_NE(message(d).find("bead.poisson_ratio must be in (-1, 0.5]"), std::string::npos) << message(d);
   d = steel_bead();
   d.mass = "1e-3";
   EXPECT_NE(message(d).find("not both"), std::string::npos) << message(d);

@@ -69,7 +69,7 @@ std::string hex(double x) {
 }
 
 TEST(SurrogateExport, Sha256MatchesTheStandardsVectors) {
-  using viscor::jobs::sha256_hex;
+  using viscor::sha256_hex;
   EXPECT_EQ(sha256_hex(""), "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855");
   EXPECT_EQ(sha256_hex("abc"), "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
   EXPECT_EQ(sha256_hex("abcdbcdecdefdefgefghfghighijhijkijkljklmklmnlmnomnopnopq"),
@@ -122,7 +122,7 @@ TEST(SurrogateExport, CommittedExportIsCurrent) {
     for (const auto& law : viscor::named_laws) {
       const std::string file = surrogate_dir() + "/" + std::string(law.name) + ".surrogate";
       if (!fs::exists(file)) continue;
-      EXPECT_NE(committed.find(viscor::jobs::sha256_hex(viscor::jobs::read_file(file))), std::string::npos)
+      EXPECT_NE(committed.find(viscor::sha256_hex(viscor::jobs::read_file(file))), std::string::npos)
           << "examples/c_export/" << f.name << " does not carry the SHA-256 of " << file;
     }
   }

@@ -29,7 +29,7 @@ struct physical_options : jobs::physical_inputs {
     app.add_option("--F", deprecated_force, "deprecated spelling of --force")->group("");
     if (with_materials) {
       app.add_option("--youngs-modulus", youngs_modulus, "bead Young's modulus, Pa (instead of --k; alpha = 3/2)");
-      app.add_option("--poisson-ratio", poisson_ratio, "bead Poisson ratio, in (-1, 1/2) (with --youngs-modulus)");
+      app.add_option("--poisson-ratio", poisson_ratio, "bead Poisson ratio, in (-1, 1/2] (with --youngs-modulus)");
       app.add_option("--radius", radius, "bead radius, m (with --youngs-modulus)");
       app.add_option("--density", density, "bead density, kg/m^3 (instead of --m, with --radius)");
       app.add_option("--contact", contact,
