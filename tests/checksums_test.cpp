@@ -63,7 +63,8 @@ fs::path damaged_copy(const fs::path& file, const fs::path& to, const std::strin
 
 TEST(Checksums, CommittedManifestsAreTrueAndComplete) {
   const std::pair<const char*, std::set<std::string>> dirs[] = {
-      {"", {".csv"}}, {"proven", {".csv"}}, {"error_maps", {".csv"}}, {"surrogates", {".surrogate", ".csv"}}};
+      {"", {".csv"}},         {"proven", {".csv"}},     {"proven/digits50", {".csv"}},
+      {"dem", {".csv"}},      {"error_maps", {".csv"}}, {"surrogates", {".surrogate", ".csv"}}};
   for (const auto& [sub, extensions] : dirs) {
     const fs::path dir = data_root / sub;
     std::set<std::string> listed;

@@ -16,5 +16,7 @@ manifest() {  # directory, glob patterns...
 }
 manifest "$root" '*.csv'
 manifest "$root/proven" '*.csv'
+manifest "$root/proven/digits50" '*.csv'
+manifest "$root/dem" '*.csv'
 manifest "$root/error_maps" '*.csv'
 manifest "$root/surrogates" '*.surrogate' '*.surrogate.verification.csv'
