@@ -22,6 +22,8 @@
 
 namespace {
 
+using viscor::test::scratch_dir;
+
 namespace fs = std::filesystem;
 
 const fs::path data_root = fs::path(VISCOR_SOURCE_DIR) / "reference_data";
@@ -32,18 +34,6 @@ std::string slurp(const fs::path& p) {
   s << in.rdbuf();
   return s.str();
 }
-
-struct scratch {
-  fs::path dir;
-  scratch() {
-    std::string name = ::testing::TempDir() + "viscor_checksumsXXXXXX";
-    if (::mkdtemp(name.data())) dir = name;
-  }
-  ~scratch() {
-    std::error_code ec;
-    fs::remove_all(dir, ec);
-  }
-};
 
 /// Copies `file` and the manifest beside it into `to`, then changes the first nonzero
 /// digit of the line after the one holding `after` to another digit: a coefficient or
@@ -82,8 +72,8 @@ TEST(Checksums, CommittedManifestsAreTrueAndComplete) {
 }
 
 TEST(Checksums, ChangedSurrogateCoefficientIsRefused) {
-  scratch s;
-  const fs::path copy = damaged_copy(data_root / "surrogates" / "tsuji.surrogate", s.dir, "\nthreshold");
+  scratch_dir s{"viscor_checksums"};
+  const fs::path copy = damaged_copy(data_root / "surrogates" / "tsuji.surrogate", s.path, "\nthreshold");
   try {
     viscor::surrogate::read_cor_surrogate(copy.string());
     FAIL() << "a changed coefficient was read";
@@ -92,31 +82,31 @@ TEST(Checksums, ChangedSurrogateCoefficientIsRefused) {
         << e.what();
   }
   // the same bytes without the manifest: a user's file, read as before
-  fs::remove(s.dir / viscor::checksum_manifest_name);
+  fs::remove(s.path / viscor::checksum_manifest_name);
   EXPECT_NO_THROW(viscor::surrogate::read_cor_surrogate(copy.string()));
 }
 
 TEST(Checksums, ChangedErrorMapAndTableAreRefused) {
-  scratch s;
-  const fs::path map = damaged_copy(data_root / "error_maps" / "tsuji.csv", s.dir, "\n");
+  scratch_dir s{"viscor_checksums"};
+  const fs::path map = damaged_copy(data_root / "error_maps" / "tsuji.csv", s.path, "\n");
   EXPECT_THROW(viscor::read_error_map(map.string()), viscor::parse_error);
-  fs::remove(s.dir / viscor::checksum_manifest_name);
-  scratch t;
-  const fs::path table = damaged_copy(data_root / "cor_g_sweep.csv", t.dir, "\n1,");
+  fs::remove(s.path / viscor::checksum_manifest_name);
+  scratch_dir t{"viscor_checksums"};
+  const fs::path table = damaged_copy(data_root / "cor_g_sweep.csv", t.path, "\n1,");
   EXPECT_THROW(viscor::read_table(table.string()), viscor::parse_error);
 }
 
 // The report: `approx --formula surrogate` used a surrogate whose coefficients
 // were changed; now the CLI refuses it, naming the file.
 TEST(Checksums, CliRefusesAChangedCommittedSurrogate) {
-  scratch s;
+  scratch_dir s{"viscor_checksums"};
   for (const auto& entry : fs::directory_iterator(data_root / "surrogates"))
-    fs::copy_file(entry.path(), s.dir / entry.path().filename());
-  const fs::path copy = s.dir / "kuwabara_kono.surrogate";
+    fs::copy_file(entry.path(), s.path / entry.path().filename());
+  const fs::path copy = s.path / "kuwabara_kono.surrogate";
   fs::remove(copy);
-  fs::remove(s.dir / viscor::checksum_manifest_name);
-  damaged_copy(data_root / "surrogates" / "kuwabara_kono.surrogate", s.dir, "\nthreshold");
-  const auto r = viscor::test::run_cli("", "VISCOR_SURROGATE_DIR='" + s.dir.string() + "' " +
+  fs::remove(s.path / viscor::checksum_manifest_name);
+  damaged_copy(data_root / "surrogates" / "kuwabara_kono.surrogate", s.path, "\nthreshold");
+  const auto r = viscor::test::run_cli("", "VISCOR_SURROGATE_DIR='" + s.path.string() + "' " +
                                                std::string(VISCOR_CLI_PATH) +
                                                " approx --model kuwabara_kono --gamma 0.05 --g 1 --formula surrogate");
   EXPECT_NE(r.status, 0) << r.out;
@@ -124,8 +114,8 @@ TEST(Checksums, CliRefusesAChangedCommittedSurrogate) {
 }
 
 TEST(Checksums, WritesKeepAListedLineTrue) {
-  scratch s;
-  const fs::path file = s.dir / "a.csv", other = s.dir / "b.csv", manifest = s.dir / viscor::checksum_manifest_name;
+  scratch_dir s{"viscor_checksums"};
+  const fs::path file = s.path / "a.csv", other = s.path / "b.csv", manifest = s.path / viscor::checksum_manifest_name;
   viscor::jobs::write_atomically(file.string(), "first\n");
   viscor::jobs::write_atomically(other.string(), "other\n");
   EXPECT_FALSE(fs::exists(manifest));  // no manifest: none is made

@@ -27,6 +27,8 @@
 
 namespace {
 
+using viscor::test::scratch_dir;
+
 using namespace viscor::test;
 namespace fs = std::filesystem;
 
@@ -37,19 +39,6 @@ constexpr double deck_tolerance = 1e-4;
 constexpr double target_e = 0.5;
 const std::string polymer = " --youngs-modulus 3e9 --poisson-ratio 0.35 --radius 1e-3 --density 1200 --target-e 0.5"
                             " --v0 0.01 --gravity 9.81";
-
-/// A fresh temporary folder, removed on destruction.
-struct scratch_dir {
-  fs::path path;
-  scratch_dir() {
-    std::string name = ::testing::TempDir() + "viscor_dem_decksXXXXXX";
-    if (::mkdtemp(name.data())) path = name;
-  }
-  ~scratch_dir() {
-    std::error_code ec;
-    if (!path.empty()) fs::remove_all(path, ec);
-  }
-};
 
 /// Runs `command` in `dir`: its exit status and output (stdout, then stderr, in `out`).
 cli_run run_in(const fs::path& dir, const std::string& command) {
@@ -86,7 +75,7 @@ TEST(DemDecks, YadeScriptAsksViscor) {
   const fs::path python = fs::path(VISCOR_CLI_PATH).parent_path() / "python";
   if (!fs::exists(python / "viscor" / "__init__.py"))
     VISCOR_SKIP_OR_FAIL_MISSING("viscor's Python module is not built in " << python.string());
-  scratch_dir dir;
+  scratch_dir dir{"viscor_dem_decks"};
   ASSERT_FALSE(dir.path.empty());
   const auto ran = run_in(dir.path, "PYTHONPATH='" + python.string() + "' '" + *yade +
                                         "' -n -x '" VISCOR_SOURCE_DIR "/examples/dem/yade_drop.py'");
@@ -101,7 +90,7 @@ TEST(DemDecks, LiggghtsDeckIncludesViscorVariables) {
   if (std::string(VISCOR_CLI_PATH).empty()) GTEST_SKIP() << "viscor CLI not built";
   const auto liggghts = dem_drop::find_program("liggghts");
   if (!liggghts) VISCOR_SKIP_OR_FAIL_MISSING("liggghts is not installed (tools/install-deps.sh installs it)");
-  scratch_dir dir;
+  scratch_dir dir{"viscor_dem_decks"};
   ASSERT_FALSE(dir.path.empty());
   const std::string block = (dir.path / "viscor_variables.in").string();
   const auto written = run_cli("dem liggghts --damping hertz" + polymer + " --variables " + block);
@@ -131,7 +120,7 @@ std::string slurp(const fs::path& path) {
 // of --json exactly as printed there.
 TEST(DemDecks, VariablesBlockIsCheckedAndExact) {
   if (std::string(VISCOR_CLI_PATH).empty()) GTEST_SKIP() << "viscor CLI not built";
-  scratch_dir dir;
+  scratch_dir dir{"viscor_dem_decks"};
   ASSERT_FALSE(dir.path.empty());
   const fs::path block = dir.path / "v.in";
   const auto first = run_cli("dem liggghts --damping hertz" + polymer + " --variables " + block.string() + " --json");

@@ -19,6 +19,8 @@
 
 namespace {
 
+using viscor::test::scratch_dir;
+
 using namespace viscor::test;
 
 const std::string glass =
@@ -28,19 +30,6 @@ constexpr double target_e = 0.8;
 /// The agreement the issue asks of a generated deck (the measured misses at dt = T/400 for a
 /// glass-like bead are about 1e-5: docs/dem.md, "Validation").
 constexpr double deck_tolerance = 1e-4;
-
-/// A fresh temporary folder, removed on destruction.
-struct scratch_dir {
-  std::filesystem::path path;
-  scratch_dir() {
-    std::string name = ::testing::TempDir() + "viscor_drop_deckXXXXXX";
-    if (::mkdtemp(name.data())) path = name;
-  }
-  ~scratch_dir() {
-    std::error_code ec;
-    if (!path.empty()) std::filesystem::remove_all(path, ec);
-  }
-};
 
 /// Runs `command` in `dir`, returning its exit status and output (stdout, then stderr, in `out`).
 cli_run run_in(const std::filesystem::path& dir, const std::string& command) {
@@ -64,7 +53,7 @@ void expect_deck_rebounds_at_target(const std::string& program_name, const std::
   if (std::string(VISCOR_CLI_PATH).empty()) GTEST_SKIP() << "viscor CLI not built";
   const auto program = dem_drop::find_program(program_name);
   if (!program) VISCOR_SKIP_OR_FAIL_MISSING(program_name << " is not installed (tools/install-deps.sh installs it)");
-  scratch_dir dir;
+  scratch_dir dir{"viscor_drop_deck"};
   ASSERT_FALSE(dir.path.empty());
   const std::string deck_name = program_name == "yade" ? "drop.py" : "drop.in";
   const std::string deck = (dir.path / deck_name).string();
@@ -130,7 +119,7 @@ TEST(DemDropDeck, LiggghtsSnippetRunsInMinimalDeck) {
       "fix grav all gravity 9.81 vector 0 0 -1\nfix integr all nve/sphere\nvariable z equal z[1]\n"
       "variable vz equal vz[1]\nthermo_style custom step v_z v_vz\nthermo_modify format float %.17g\nthermo 1\n"
       "run " + std::to_string(static_cast<long>(6 * std::stod(j["time_scale_s"].get<std::string>()) / dt)) + "\n";
-  scratch_dir dir;
+  scratch_dir dir{"viscor_drop_deck"};
   ASSERT_FALSE(dir.path.empty());
   std::ofstream(dir.path / "in.snippet") << deck;
   std::vector<dem_drop::sample> samples;
@@ -189,7 +178,7 @@ TEST(DemDropDeck, YadeSnippetRunsAsPasted) {
                              "O.run(int(2 * " + dem_drop::format_double(contact) + " / O.dt), True)\n"
                              "v = O.bodies[1].state.vel[2] + 9.81 * (O.time - " + dem_drop::format_double(contact) + ")\n"
                              "print('rebound e = %.15g' % (v / 0.5))\nsys.stdout.flush()\n";
-  scratch_dir dir;
+  scratch_dir dir{"viscor_drop_deck"};
   ASSERT_FALSE(dir.path.empty());
   std::ofstream(dir.path / "snippet.py") << script;
   const auto ran = run_in(dir.path, "'" + *program + "' -n -x snippet.py");

@@ -23,6 +23,8 @@
 
 namespace {
 
+using viscor::test::scratch_dir;
+
 using namespace viscor::test;
 
 // Glass (the bead) and steel (the plate, or the other bead), SI units.
@@ -69,22 +71,10 @@ nlohmann::json dem_json(const std::string& args) {
 
 double json_number(const nlohmann::json& j, const char* key) { return std::stod(j.at(key).get<std::string>()); }
 
-struct scratch_dir {
-  std::filesystem::path path;
-  scratch_dir() {
-    std::string name = ::testing::TempDir() + "viscor_two_materialsXXXXXX";
-    if (::mkdtemp(name.data())) path = name;
-  }
-  ~scratch_dir() {
-    std::error_code ec;
-    if (!path.empty()) std::filesystem::remove_all(path, ec);
-  }
-};
-
 /// Runs `command` in a scratch folder holding `file` = `text`; returns the lines starting "FORCE".
 std::vector<double> printed_forces(const std::string& file, const std::string& text, const std::string& command,
                                    std::string& log) {
-  scratch_dir dir;
+  scratch_dir dir{"viscor_two_materials"};
   std::ofstream(dir.path / file) << text;
   const auto r = run_cli("", "cd '" + dir.path.string() + "' && " + command + " 2>&1");
   log = r.out + r.err;

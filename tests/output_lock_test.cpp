@@ -14,24 +14,14 @@
 
 namespace {
 
+using viscor::test::scratch_dir;
+
 using viscor::test::run_cli;
 
-struct scratch {
-  std::filesystem::path dir;
-  scratch() {
-    std::string name = ::testing::TempDir() + "viscor_lockXXXXXX";
-    if (::mkdtemp(name.data())) dir = name;
-  }
-  ~scratch() {
-    std::error_code ec;
-    std::filesystem::remove_all(dir, ec);
-  }
-};
-
 TEST(OutputLock, SecondWriterStopsWithAMessage) {
-  scratch s;
-  ASSERT_FALSE(s.dir.empty());
-  const std::string spec = (s.dir / "spec.json").string(), out = (s.dir / "t.csv").string();
+  scratch_dir s{"viscor_lock"};
+  ASSERT_FALSE(s.path.empty());
+  const std::string spec = (s.path / "spec.json").string(), out = (s.path / "t.csv").string();
   std::ofstream(spec) << R"({"laws": ["linear"], "gamma": [0.05, 0.5], "g": 1, "digits": 20})";
   {
     const viscor::jobs::output_lock held(out);  // another writer, as far as the CLI can tell
@@ -49,15 +39,15 @@ TEST(OutputLock, SecondWriterStopsWithAMessage) {
 }
 
 TEST(OutputLock, TwoLocksInOneProcessExcludeEachOther) {
-  scratch s;
-  const std::string out = (s.dir / "t.csv").string();
+  scratch_dir s{"viscor_lock"};
+  const std::string out = (s.path / "t.csv").string();
   const viscor::jobs::output_lock first(out);
   EXPECT_THROW(viscor::jobs::output_lock second(out), viscor::error);
 }
 
 TEST(SceneLimits, HugeImpactCountIsRefusedNamingTheField) {
-  scratch s;
-  const std::string scene = (s.dir / "scene.json").string();
+  scratch_dir s{"viscor_lock"};
+  const std::string scene = (s.path / "scene.json").string();
   std::ofstream(scene) << R"({"law": "kuwabara_kono", "bead": {"m": 1e-3, "k": 1e9}, "damping": {"gamma0": 1e-6},
     "gravity": 9.81, "velocities": {"from": 0.1, "to": 1, "count": 999999999}, "tolerance": 1e-6})";
   const auto r = run_cli("scene " + scene);

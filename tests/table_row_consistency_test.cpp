@@ -2,8 +2,10 @@
 // reader of committed data): a certified e outside its own proven enclosure, more
 // proven digits than the enclosure's width allows, more certified digits than e is
 // written with, and a resumed row that is not the grid point of its index are each
-// refused naming the file, line and field. The rows are committed ones
-// (reference_data/proven/cor_g_sweep.csv) with one field changed.
+// refused naming the file, line and field; so is a merged row that is not the grid
+// point of its index in the spec its sidecar records. The rows are committed ones
+// (reference_data/proven/cor_g_sweep.csv) with one field changed, or rows of small
+// tables made here.
 #include "test_utils.hpp"
 
 #include <viscor/jobs/table_format.hpp>
@@ -15,9 +17,12 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace {
+
+using viscor::test::scratch_dir;
 
 namespace fs = std::filesystem;
 using viscor::test::run_cli;
@@ -79,9 +84,9 @@ TEST(TableRowConsistency, MoreCertifiedDigitsThanWritten) {
 
 // --resume keeps only rows that are the grid points of their index.
 TEST(TableRowConsistency, ResumedRowOffTheGridIsRefused) {
-  std::string dir = ::testing::TempDir() + "viscor_row_consistencyXXXXXX";
-  ASSERT_NE(::mkdtemp(dir.data()), nullptr);
-  const std::string spec = dir + "/spec.json", out = dir + "/t.csv";
+  const scratch_dir scratch{"viscor_row_consistency"};
+  ASSERT_FALSE(scratch.path.empty());
+  const std::string dir = scratch.path.string(), spec = dir + "/spec.json", out = dir + "/t.csv";
   std::ofstream(spec) << R"({"laws": ["linear"], "gamma": [0.05, 0.1, 0.5], "g": 1, "digits": 20})";
   setenv("VISCOR_TABLE_STOP_AFTER", "1", 1);
   const auto stopped = run_cli("table " + spec + " -o " + out + " --threads 1 --quiet", VISCOR_CLI_TEST_HOOKS_PATH);
@@ -99,7 +104,75 @@ TEST(TableRowConsistency, ResumedRowOffTheGridIsRefused) {
   EXPECT_NE(resumed.status, 0);
   EXPECT_NE(resumed.err.find("not the grid point"), std::string::npos) << resumed.err;
   EXPECT_FALSE(fs::exists(out));
-  fs::remove_all(dir);
+}
+
+/// Makes the two shards of a small table from `spec_text` in a fresh folder (`command`:
+/// "table" or "table sticking"), changes field `column` of shard 1's first row to
+/// `value` (to another row's value when `value` is that row's own) and merges them.
+struct merge_attempt {
+  viscor::test::cli_run merged;
+  bool output_written = false;
+};
+
+merge_attempt merge_with_changed_row(const std::string& command, const std::string& spec_text, std::size_t column,
+                                     const std::string& value, const std::string& other_value) {
+  const scratch_dir scratch{"viscor_merge_grid"};
+  EXPECT_FALSE(scratch.path.empty());
+  const std::string dir = scratch.path.string(), spec = dir + "/spec.json";
+  std::ofstream(spec) << spec_text;
+  for (const char* part : {"0", "1"}) {
+    const auto made = run_cli(command + " " + spec + " -o " + dir + "/s" + part + ".csv --shard " + part + "/2 --quiet");
+    EXPECT_EQ(made.status, 0) << made.err;
+  }
+  if (column > 0) {
+    std::ifstream in(dir + "/s1.csv");
+    std::string header, row, rest, line;
+    std::getline(in, header), std::getline(in, row);
+    while (std::getline(in, line)) rest += line + "\n";
+    in.close();
+    std::vector<std::string> f = split(row);
+    EXPECT_GT(f.size(), column);
+    if (f.size() > column) f[column] = f[column] == value ? other_value : value;
+    std::ofstream(dir + "/s1.csv") << header << "\n" << join(f) << "\n" << rest;
+  }
+  merge_attempt a;
+  a.merged = run_cli("table merge " + dir + "/s0.csv " + dir + "/s1.csv -o " + dir + "/all.csv");
+  a.output_written = fs::exists(dir + "/all.csv");
+  return a;
+}
+
+const char* const cor_spec = R"({"laws": ["linear"], "gamma": [0.05, 0.1, 0.5], "g": [0, 1], "digits": 20})";
+const char* const sticking_spec =
+    R"({"laws": ["linear"], "gamma": [0.05, 0.1, 0.5], "solve_for": "g", "threshold_digits": 10, "digits": 20})";
+
+TEST(TableRowConsistency, MergeOfUnchangedShardsPasses) {
+  const merge_attempt cor = merge_with_changed_row("table", cor_spec, 0, "", "");
+  EXPECT_EQ(cor.merged.status, 0) << cor.merged.err;
+  EXPECT_TRUE(cor.output_written);
+  const merge_attempt sticking = merge_with_changed_row("table sticking", sticking_spec, 0, "", "");
+  EXPECT_EQ(sticking.merged.status, 0) << sticking.merged.err;
+  EXPECT_TRUE(sticking.output_written);
+}
+
+// A merged row must be the grid point of its index: a gamma or g of another row,
+// one off the grid, and a g of another row are each refused, and nothing is written.
+TEST(TableRowConsistency, MergedRowOffTheGridIsRefused) {
+  for (const auto& [column, value, other] : std::vector<std::tuple<std::size_t, std::string, std::string>>{
+           {4, "0.5", "0.05"}, {4, "0.07", "0.08"}, {5, "0", "1"}}) {
+    const merge_attempt a = merge_with_changed_row("table", cor_spec, column, value, other);
+    EXPECT_EQ(a.merged.status, 2) << "column " << column << ": " << a.merged.err;
+    EXPECT_NE(a.merged.err.find("not the grid point"), std::string::npos) << a.merged.err;
+    EXPECT_NE(a.merged.err.find("s1.csv:2: fields law..g"), std::string::npos) << a.merged.err;
+    EXPECT_FALSE(a.output_written);
+  }
+}
+
+// The same for a sticking-threshold table: its fixed value (gamma here) names the point.
+TEST(TableRowConsistency, MergedThresholdRowOffTheGridIsRefused) {
+  const merge_attempt a = merge_with_changed_row("table sticking", sticking_spec, 5, "0.07", "0.08");
+  EXPECT_EQ(a.merged.status, 2) << a.merged.err;
+  EXPECT_NE(a.merged.err.find("not the grid point"), std::string::npos) << a.merged.err;
+  EXPECT_FALSE(a.output_written);
 }
 
 }  // namespace

@@ -132,6 +132,22 @@ inline cli_run run_cli(const std::string& args, const std::string& program = VIS
   return r;
 }
 
+/// A fresh empty directory TempDir()/<prefix>XXXXXX for the lifetime of the object,
+/// removed with everything in it at the end; `path` is empty if it could not be made.
+struct scratch_dir {
+  std::filesystem::path path;
+  explicit scratch_dir(const std::string& prefix) {
+    std::string name = ::testing::TempDir() + prefix + "XXXXXX";
+    if (::mkdtemp(name.data())) path = name;
+  }
+  ~scratch_dir() {
+    std::error_code ec;
+    if (!path.empty()) std::filesystem::remove_all(path, ec);
+  }
+  scratch_dir(const scratch_dir&) = delete;
+  scratch_dir& operator=(const scratch_dir&) = delete;
+};
+
 /// A test with its own empty scratch directory, TempDir()/<prefix><test name>:
 /// removed after a passing test, kept for inspection after a failing one. The
 /// table runner's test hooks set by a test are unset after it.

@@ -228,23 +228,9 @@ inline std::string certify_verification_points(const surrogate_build_request& q,
       points->push_back({static_cast<std::int64_t>(i), spec.fit.law, exact_text(drawn[i].gamma), exact_text(drawn[i].g)});
   const std::string table = output + ".verification" +
       (part.whole() ? std::string() : ".shard-" + std::to_string(part.index) + "-of-" + std::to_string(part.count)) + ".csv";
-  table_job job;
-  job.kind = table_kind::cor;
-  job.output = table;
-  job.resume = q.resume;
-  job.threads = q.threads;
-  job.quiet = q.quiet;
-  job.handle_signals = q.handle_signals;
-  job.stop_after_rows = q.stop_after_rows;
-  job.should_stop = q.should_stop;
+  table_job job = new_table_job(q, table_kind::cor, false, table, static_cast<std::int64_t>(drawn.size()), part,
+                                q.spec_path);
   json& p = job.provenance;
-  p["viscor_version"] = VISCOR_VERSION;
-  p["git_commit"] = git_commit();
-  p["kind"] = "cor";
-  p["columns"] = table_header(table_kind::cor);
-  p["rows_total"] = drawn.size();
-  p["shard"] = part.whole() ? json(nullptr) : json{{"index", part.index}, {"count", part.count}};
-  p["spec_file"] = q.spec_path;
   p["spec"] = {{"what", "verification points of a CoR surrogate: fixed-seed random points in five strata "
                         "(surrogate_verify.hpp), drawn after the fit"},
                {"surrogate_spec", spec.normalised}};

@@ -119,25 +119,8 @@ inline void check_run_options(const table_run_options& run, const std::string& c
 inline table_job make_job(const table_run_options& run, table_kind kind, const table_spec& table,
                           std::int64_t rows_total) {
   const grid_spec& spec = table.grid;
-  const shard& part = run.part;
-  table_job j;
-  j.kind = kind;
-  j.proven = table.proven;
-  j.output = run.output;
-  j.resume = run.resume;
-  j.threads = run.threads;
-  j.quiet = run.quiet;
-  j.handle_signals = run.handle_signals;
-  j.should_stop = run.should_stop;
-  j.stop_after_rows = run.stop_after_rows;
+  table_job j = new_table_job(run, kind, table.proven, run.output, rows_total, run.part, run.spec_file);
   json& p = j.provenance;
-  p["viscor_version"] = VISCOR_VERSION;
-  p["git_commit"] = git_commit();
-  p["kind"] = kind == table_kind::cor ? "cor" : "sticking";
-  p["columns"] = table_format{kind, table.proven}.header();
-  p["rows_total"] = rows_total;
-  p["shard"] = part.whole() ? json(nullptr) : json{{"index", part.index}, {"count", part.count}};
-  p["spec_file"] = run.spec_file;
   p["spec"] = spec_to_json(table);  // method "proven" in it: a proven and a certified run never mix
   p["scalar"] = scalar_provenance(spec.digits);
   p["method"] = method_provenance(table);
@@ -156,6 +139,21 @@ inline void require_proof(const table_spec& table) {
     throw parse_error(spec.source + ": field digits: method \"proven\" needs at least 5 digits, got " +
                       std::to_string(spec.digits));
   for (const auto& law : spec.laws) require_provable(law, spec.source + ": field laws: " + law.describe());
+}
+
+/// The grid_key of every row of a table of kind `k` made from `table`, by index.
+inline std::vector<std::string> grid_keys(const table_spec& table, table_kind k) {
+  const expanded_axes axes = expand(table.grid);
+  std::vector<std::string> keys;
+  auto put = [&keys](std::int64_t index, std::string key) {
+    if (index >= static_cast<std::int64_t>(keys.size())) keys.resize(static_cast<std::size_t>(index) + 1);
+    keys[static_cast<std::size_t>(index)] = std::move(key);
+  };
+  if (k == table_kind::cor)
+    for (const auto& p : grid_points(table.grid, axes)) put(p.index, grid_key(p));
+  else
+    for (const auto& p : threshold_points(table.grid, axes)) put(p.index, grid_key(p));
+  return keys;
 }
 
 }  // namespace detail
@@ -181,7 +179,7 @@ inline table_run_summary make_cor_table(const table_spec& table, const table_run
   for (const auto& p : *points) job.indices.push_back(p.index);
   const table_settings settings = table_settings::from(spec);
   job.compute_line = [points, settings](std::size_t i) { return csv_line(compute_row((*points)[i], settings)); };
-  job.grid_columns = [points](std::size_t i) { return csv_grid_columns((*points)[i]); };
+  job.expected_grid_key = [points](std::size_t i) { return grid_key((*points)[i]); };
 #ifdef VISCOR_WITH_ENCLOSE
   if (table.proven)
     job.compute_line = [points, settings, digits = detail::proof_digits(spec.digits), shift = run.certified_e_shift](std::size_t i) {
@@ -219,6 +217,7 @@ inline table_run_summary make_sticking_table(const table_spec& table, const tabl
                            (for_g ? ", gamma = " : ", g = ") + p.fixed + ")");
   table_job job = detail::make_job(run, table_kind::sticking, table, rows_total);
   for (const auto& p : *points) job.indices.push_back(p.index);
+  job.expected_grid_key = [points](std::size_t i) { return grid_key((*points)[i]); };
   job.provenance["threshold"] = {
       {"solve_for", to_string(spec.solve_for)},
       {"requested_digits", spec.threshold_digits},
@@ -275,6 +274,16 @@ inline std::size_t merge_tables(const std::vector<std::string>& input_paths, con
       throw error("cannot merge '" + in.path + "' with '" + inputs.front().path +
                   "': their sidecars record a different spec, precision, method or viscor version");
   }
+  // Every row is the grid point its index names in the spec the sidecars record
+  // (a surrogate's verification table holds drawn points, no grid: not checked).
+  const table_kind kind = inputs.front().table.kind;
+  const bool on_grid = !reference["spec"].contains("surrogate_spec");
+  const std::vector<std::string> keys =
+      on_grid ? detail::grid_keys(parse_normalised_spec(reference["spec"], inputs.front().path + ".json"), kind)
+              : std::vector<std::string>{};
+  if (on_grid && static_cast<std::int64_t>(keys.size()) != rows_total)
+    throw parse_error(inputs.front().path + ".json: field rows_total: " + std::to_string(rows_total) +
+                      ", but its spec has " + std::to_string(keys.size()) + " grid points");
   // Every grid row exactly once, each in the shard that claims it.
   std::map<std::int64_t, std::pair<const input*, std::size_t>> seen;  // index -> (file, line)
   std::vector<csv_record> rows;
@@ -289,6 +298,10 @@ inline std::size_t merge_tables(const std::vector<std::string>& input_paths, con
       if (!part.contains(row.index))
         throw parse_error(in.path + ":" + std::to_string(row.line) + ": field index: row " +
                           std::to_string(row.index) + " does not belong to shard " + part.to_string());
+      if (on_grid && grid_key(row, kind) != keys[static_cast<std::size_t>(row.index)])
+        throw parse_error(in.path + ":" + std::to_string(row.line) + ": fields law..g: row " +
+                          std::to_string(row.index) + " is (" + grid_key(row, kind) + "), not the grid point (" +
+                          keys[static_cast<std::size_t>(row.index)] + ") of the spec its sidecar records");
       const auto [it, fresh] = seen.emplace(row.index, std::make_pair(&in, row.line));
       if (!fresh)
         throw parse_error(in.path + ":" + std::to_string(row.line) + ": field index: row " +

@@ -51,9 +51,9 @@ struct table_job {
   std::string output;                   ///< OUT.csv
   std::vector<std::int64_t> indices;    ///< grid indices of the rows of this run (its shard), ascending
   std::function<std::string(std::size_t)> compute_line;  ///< CSV line of row indices[i] (thread-safe)
-  /// The grid columns ("law,alpha,beta,gamma,g", fields 1-5) row indices[i] must have:
-  /// --resume checks the rows it keeps against them. Empty: not checked.
-  std::function<std::string(std::size_t)> grid_columns;
+  /// The grid_key (reference_table.hpp) row indices[i] must have: --resume checks the
+  /// rows it keeps against it. Empty: not checked.
+  std::function<std::string(std::size_t)> expected_grid_key;
   /// Sidecar fields (version, kind, spec, shard, scalar, method, ...); the
   /// table_fingerprint of them must match for --resume and merge.
   json provenance;
@@ -70,6 +70,35 @@ struct table_job {
   /// as a Ctrl-C would; -1: never.
   long long stop_after_rows = -1;
 };
+
+/// A job writing `output` with the run settings of `run` (any options struct with
+/// resume, threads, quiet, handle_signals, should_stop and stop_after_rows: the
+/// table jobs' and the surrogate build's), and the sidecar fields every table has:
+/// version, commit, kind, columns, rows_total, shard, spec_file. The caller adds
+/// the spec, scalar and method, and the rows.
+template <class RunOptions>
+table_job new_table_job(const RunOptions& run, table_kind kind, bool proven, const std::string& output,
+                        std::int64_t rows_total, const shard& part, const std::string& spec_file) {
+  table_job j;
+  j.kind = kind;
+  j.proven = proven;
+  j.output = output;
+  j.resume = run.resume;
+  j.threads = run.threads;
+  j.quiet = run.quiet;
+  j.handle_signals = run.handle_signals;
+  j.should_stop = run.should_stop;
+  j.stop_after_rows = run.stop_after_rows;
+  json& p = j.provenance;
+  p["viscor_version"] = VISCOR_VERSION;
+  p["git_commit"] = git_commit();
+  p["kind"] = kind == table_kind::cor ? "cor" : "sticking";
+  p["columns"] = table_format{kind, proven}.header();
+  p["rows_total"] = rows_total;
+  p["shard"] = part.whole() ? json(nullptr) : json{{"index", part.index}, {"count", part.count}};
+  p["spec_file"] = spec_file;
+  return j;
+}
 
 /// What must agree between a partial run and its resumption, and (without
 /// "shard") between the shards of one table: everything that decides the rows.
@@ -245,11 +274,10 @@ inline table_run_summary run_table_job(const table_job& job) {
       if (!done.insert(row.index).second)
         throw parse_error(partial + ":" + std::to_string(row.line) + ": field index: row " +
                           std::to_string(row.index) + " appears twice");
-      if (job.grid_columns) {  // a row kept must be the grid point its index names
+      if (job.expected_grid_key) {  // a row kept must be the grid point its index names
         const auto at = std::lower_bound(job.indices.begin(), job.indices.end(), row.index);
-        const std::string expected = job.grid_columns(static_cast<std::size_t>(at - job.indices.begin()));
-        const std::string found = row.fields.at(1) + "," + row.fields.at(2) + "," + row.fields.at(3) + "," +
-                                  row.fields.at(4) + "," + row.fields.at(5);
+        const std::string expected = job.expected_grid_key(static_cast<std::size_t>(at - job.indices.begin()));
+        const std::string found = grid_key(row, job.kind);
         if (found != expected)
           throw parse_error(partial + ":" + std::to_string(row.line) + ": fields law..g: row " +
                             std::to_string(row.index) + " is (" + found + "), not the grid point (" + expected +

@@ -448,4 +448,25 @@ inline json spec_to_json(const table_spec& table) {
   return j;
 }
 
+/// Reads back a spec that spec_to_json normalised (a table's sidecar records it):
+/// `table merge` expands the grid from it to check each row's grid point. The
+/// normalised form names a law as {name, alpha, beta} and a single axis value as
+/// {"value": v}; the spec reader takes a law's name (or {alpha, beta} for an
+/// unnamed one) and the bare value, so those are written back first.
+/// `where` names the file in errors. Throws viscor::parse_error.
+inline table_spec parse_normalised_spec(json normalised, const std::string& where) {
+  if (!normalised.is_object()) throw parse_error(where + ": field spec: not a JSON object");
+  if (normalised.contains("laws") && normalised["laws"].is_array())
+    for (auto& law : normalised["laws"])
+      if (law.is_object() && law.contains("name") && law["name"].is_string()) {
+        if (!law["name"].get<std::string>().empty()) law = law["name"];
+        else law.erase("name");
+      }
+  for (const char* axis : {"gamma", "g"})
+    if (normalised.contains(axis) && normalised[axis].is_array())
+      for (auto& item : normalised[axis])
+        if (item.is_object() && item.contains("value")) item = item["value"];
+  return parse_spec_json(normalised.dump(1), where);
+}
+
 }  // namespace viscor::jobs

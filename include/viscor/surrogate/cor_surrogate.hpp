@@ -487,13 +487,17 @@ struct reader {
   }
 };
 
+/// The most nodes a patch tree may have: the fit writes about a hundred; ten
+/// million is a file of some 300 MB.
+inline constexpr std::size_t max_tree_nodes = 10'000'000;
+
 inline patch_tree read_tree(reader& r, const std::string& name) {
   r.expect(name);
   patch_tree t;
   t.x0 = r.next<double>("x0"), t.x1 = r.next<double>("x1"), t.y0 = r.next<double>("y0"), t.y1 = r.next<double>("y1");
   t.order = r.next<int>("order");
   const auto nodes = r.next<std::size_t>("node count"), patches = r.next<std::size_t>("patch count");
-  if (t.order < 2 || t.order > 64 || nodes < 1 || nodes > 100'000'000 || patches > nodes)
+  if (t.order < 2 || t.order > 64 || nodes < 1 || nodes > max_tree_nodes || patches > nodes)
     throw parse_error(r.file + ": surrogate file: bad sizes in " + name);
   if (!std::isfinite(t.x0) || !std::isfinite(t.x1) || !std::isfinite(t.y0) || !std::isfinite(t.y1) ||
       !(t.x0 < t.x1) || !(t.y0 < t.y1))
@@ -501,20 +505,28 @@ inline patch_tree read_tree(reader& r, const std::string& name) {
   // A tree as the fit writes it: each node's children come after it, every node
   // but the root is the child of exactly one node and every patch belongs to
   // exactly one leaf. Anything else (a cycle, a shared subtree) would make the
-  // walk down the tree loop or the index grow without bound.
-  t.nodes.resize(nodes);
-  std::vector<char> node_used(nodes, 0), patch_used(patches, 0);
+  // walk down the tree loop or the index grow without bound. The counts are only
+  // claims: storage grows with what is read, so a short file that claims millions
+  // of nodes fails at its end, not after allocating them.
+  t.nodes.clear();
+  t.nodes.reserve(std::min<std::size_t>(nodes, 4096));
+  std::vector<char> node_used, patch_used;
+  auto mark = [](std::vector<char>& used, std::size_t i) {  // false if i was used before
+    if (i >= used.size()) used.resize(i + 1, 0);
+    return !used[i]++;
+  };
   for (std::size_t k = 0; k < nodes; ++k) {
-    auto& n = t.nodes[k];
+    auto& n = t.nodes.emplace_back();
     n.dim = r.next<std::int32_t>("node"), n.child = r.next<std::int32_t>("node"), n.split = r.next<double>("node");
     bool ok = n.dim == 2 ? (n.child >= 0 && static_cast<std::size_t>(n.child) < patches)
                          : (n.dim >= 0 && n.dim < 2 && n.child > 0 && static_cast<std::size_t>(n.child) > k &&
                             static_cast<std::size_t>(n.child) + 1 < nodes && std::isfinite(n.split));
-    if (ok && n.dim == 2) ok = !patch_used[static_cast<std::size_t>(n.child)]++;
+    if (ok && n.dim == 2) ok = mark(patch_used, static_cast<std::size_t>(n.child));
     if (ok && n.dim != 2)
-      ok = !node_used[static_cast<std::size_t>(n.child)]++ && !node_used[static_cast<std::size_t>(n.child) + 1]++;
+      ok = mark(node_used, static_cast<std::size_t>(n.child)) && mark(node_used, static_cast<std::size_t>(n.child) + 1);
     if (!ok) throw parse_error(r.file + ": surrogate file: bad node " + std::to_string(k) + " in " + name);
   }
+  node_used.resize(nodes, 0), patch_used.resize(patches, 0);  // every node and patch read by now
   if (std::count(node_used.begin() + 1, node_used.end(), 0) != 0 || std::count(patch_used.begin(), patch_used.end(), 0) != 0)
     throw parse_error(r.file + ": surrogate file: nodes or patches outside the tree in " + name);
   t.patches.resize(patches);

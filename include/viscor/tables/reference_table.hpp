@@ -119,6 +119,27 @@ struct csv_record {
   std::size_t line = 0;  ///< 1-based line number in its file
 };
 
+/// The grid columns of a CoR row ("law,alpha,beta,gamma,g"): what names its grid point.
+inline std::string grid_key(const grid_point& p) {
+  return p.law.name + "," + p.law.alpha.to_string() + "," + p.law.beta.to_string() + "," + p.gamma + "," + p.g;
+}
+
+/// The grid columns of a threshold row ("law,alpha,beta,solve_for,fixed value"); the
+/// solved-for value is the row's result, not part of its grid point.
+inline std::string grid_key(const threshold_point& p) {
+  return p.law.name + "," + p.law.alpha.to_string() + "," + p.law.beta.to_string() + "," + to_string(p.solve_for) +
+         "," + p.fixed;
+}
+
+/// The same key read from a row of a table of kind `k`, to compare with the
+/// grid_key of the point its index names (resume and merge).
+inline std::string grid_key(const csv_record& row, table_kind k) {
+  const auto& f = row.fields;
+  if (k == table_kind::cor) return f.at(1) + "," + f.at(2) + "," + f.at(3) + "," + f.at(4) + "," + f.at(5);
+  const bool for_g = f.at(4) == to_string(threshold_variable::g);  // the fixed value is gamma
+  return f.at(1) + "," + f.at(2) + "," + f.at(3) + "," + f.at(4) + "," + (for_g ? f.at(5) : f.at(6));
+}
+
 /// A parsed and validated table.
 struct csv_table {
   table_kind kind = table_kind::cor;

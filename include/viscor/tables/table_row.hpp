@@ -128,11 +128,6 @@ std::string rounded_decimal(const Real& x, int digits) {
   return to_decimal_string(x, digits);
 }
 
-/// The grid columns of a point's row as the CSV writes them: "law,alpha,beta,gamma,g".
-inline std::string csv_grid_columns(const grid_point& p) {
-  return p.law.name + "," + p.law.alpha.to_string() + "," + p.law.beta.to_string() + "," + p.gamma + "," + p.g;
-}
-
 /// Formats a certified point as a table row (Real -> rounded decimal strings).
 template <class Real>
 table_row make_row(const grid_point& p, const point_result<Real>& r) {
