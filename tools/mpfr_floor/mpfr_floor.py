@@ -10,7 +10,8 @@ from the functions libmpfr exports): each entry point counts its call when it is
 made from inside another MPFR call (so a pow is one pow, not also the logs and exps
 it makes), then jumps to MPFR. A driver (solve_driver.cpp) brackets N solves with
 the library's reset and dump hooks. Costs come from a generated micro-benchmark that
-calls each counted function on operands of the solve's precision.
+calls each counted function on operands of the solve's precision, with exponents and
+signs spread as along a Taylor series.
 
 Usage: tools/mpfr_floor/mpfr_floor.py [BUILD_DIR] [--solves N]
   BUILD_DIR: a configured and built viscor build tree (default build), for
@@ -133,7 +134,7 @@ def counting_library(names, work):
 
 
 def micro_benchmark(functions, prec, work):
-    """ns per call of each function at `prec` bits (CPU time; operands near 1)."""
+    """ns per call of each function at `prec` bits (CPU time, operands spread like a solve's)."""
     body = []
     for name in functions:
         short = name[len("mpfr_"):]
@@ -150,13 +151,31 @@ def micro_benchmark(functions, prec, work):
 #define PREC %d
 static double cpu(void) { struct timespec t; clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t); return t.tv_sec + 1e-9 * t.tv_nsec; }
 int main(void) {
-  mpfr_t x, y, z, r; unsigned long u = 3; long s = -3; double d = 1.25; volatile long sink = 0;
-  mpfr_inits2(PREC, x, y, z, r, (mpfr_ptr)0);
-  mpfr_set_str(x, "1.2345678901234567890123456789012345678901234567891", 10, MPFR_RNDN);
-  mpfr_set_str(y, "0.7512345678901234567890123456789012345678901234567", 10, MPFR_RNDN);
-  mpfr_set_str(z, "-0.312345678901234567890123456789012345678901234567", 10, MPFR_RNDN);
+  /* Operands like a solve's: 64 of each, exponents spread over 2^-40..2^1 (Taylor
+     coefficients shrink along a series), y and z of either sign (so additions also
+     subtract and cancel), taken in an order the branch predictor cannot learn. */
+  mpfr_t X[64], Y[64], Z[64], r; unsigned long u = 3; long s = -3; double d = 1.25; volatile long sink = 0;
+  unsigned long long seed = 88172645463325252ull;
+  mpfr_init2(r, PREC);
+  for (int k = 0; k < 64; ++k) {
+    mpfr_t* v[3] = {&X[k], &Y[k], &Z[k]};
+    for (int j = 0; j < 3; ++j) {
+      mpfr_init2(*v[j], PREC);
+      mpfr_set_ui(*v[j], 0, MPFR_RNDN);
+      for (int w = 0; w < 3; ++w) {  /* a full-precision mantissa from three 64-bit draws */
+        seed ^= seed << 13, seed ^= seed >> 7, seed ^= seed << 17;
+        mpfr_mul_2ui(*v[j], *v[j], 64, MPFR_RNDN);
+        mpfr_add_ui(*v[j], *v[j], (unsigned long)seed, MPFR_RNDN);
+      }
+      mpfr_mul_2si(*v[j], *v[j], -192 - (long)(seed %% 41), MPFR_RNDN);
+      if (j > 0 && (seed >> 40) %% 2) mpfr_neg(*v[j], *v[j], MPFR_RNDN);
+    }
+  }
+#define x X[(i * 37 + 11) & 63]
+#define y Y[(i * 23 + 5) & 63]
+#define z Z[(i * 29 + 3) & 63]
 %s
-  (void)sink; mpfr_clears(x, y, z, r, (mpfr_ptr)0); return 0;
+  (void)sink; return 0;
 }
 """ % (prec, "\n".join(body)))
     exe = os.path.join(work, "cost")
