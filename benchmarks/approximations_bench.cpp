@@ -1,6 +1,6 @@
 // Time per evaluation of each approximate CoR formula (approximations.hpp), with
 // the per-law constants built once, next to the time of the CoR integrated by
-// solve_impact, so the speed-accuracy trade is visible. Targets of issue 5 in
+// solve_impact, so the speed-accuracy trade is visible. Targets in
 // double: small g and large g <= 100 ns; Prop. 2 with Chebyshev-Beta
 // coefficients <= 5 us; with tanh-sinh coefficients <= 50 us. Reproduce with
 //   cmake -S . -B build -DVISCOR_BUILD_BENCHMARKS=ON && cmake --build build --target approximations_bench

@@ -1,4 +1,4 @@
-// Cost of viscor::certify relative to one Taylor solve (issue 4 target: <= 4x at
+// Cost of viscor::certify relative to one Taylor solve (target: <= 4x at
 // 50 and 100 digits), with the adaptive solve alone for reference; Kuwabara-Kono at
 // the two points of the solve_impact benchmark. Reproduce with
 //   cmake -S . -B build -DVISCOR_BUILD_BENCHMARKS=ON && cmake --build build --target certification_bench

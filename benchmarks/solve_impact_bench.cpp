@@ -1,5 +1,5 @@
 // Time per CoR of solve_impact (Taylor method) for Kuwabara-Kono at the two
-// parameter points of issue 3, per scalar type. Reproduce with
+// parameter points of the timing targets (docs/performance.md), per scalar type. Reproduce with
 //   cmake -S . -B build -DVISCOR_BUILD_BENCHMARKS=ON && cmake --build build --target solve_impact_bench
 //   ./build/benchmarks/solve_impact_bench
 // (the 1000-digit case is opt-in: --benchmark_filter=1000 --benchmark_min_time=1x... see below).

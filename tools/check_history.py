@@ -27,7 +27,7 @@ import sys
 
 # What is checked, relative to the repository root: folders (every text file below
 # them) and single files or globs.
-ROOTS = ["include", "src", "python", "tools", "tests", "docs/*.md"]
+ROOTS = ["include", "src", "python", "tools", "tests", "benchmarks", "examples", "docs/*.md"]
 
 # History pages: the only places an issue number belongs.
 ALLOWED = {"docs/history.md", "CHANGELOG.md"}
