@@ -10,7 +10,9 @@
 
 #include "test_utils.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <random>
 #include <vector>
 
 namespace viscor {
@@ -187,3 +189,93 @@ TEST(TaylorOrder, JorbaZouRule) {
 
 }  // namespace
 }  // namespace viscor
+
+#if VISCOR_HAS_MPFR
+// The MPFR sums of products (mpfr_dot) are exact fixed-point sums rounded once up to
+// fixed_point_dot_limbs limbs: against the same sum computed at 2000 bits and then
+// rounded (the truth, by another route: MPFR's own products and sums, exact at that
+// width for these inputs), every result is the correctly rounded one or within one
+// ulp of it; inputs with zeros, mixed signs, exponents 2^-60..2^2 apart and terms
+// built to cancel. Above the limit it falls back to one rounding per product and
+// sum (checked against the same truth and the bound of those roundings).
+/// Sums of products by mpfr_dot against the same sums at 2000 bits: how many results
+/// are the correctly rounded ones, the worst distance in ulps of the others, and the
+/// worst error as a fraction of the bound of one rounding per product and sum,
+/// (terms + 1) 2^(1 - precision) sum |a[j] b[k - j]|.
+template <class Real>
+void check_dot_against_wide_sum(unsigned seed, int trials, int& correctly_rounded, int& worst_ulps,
+                                double& worst_of_bound) {
+  std::mt19937_64 gen(seed);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  std::uniform_int_distribution<int> exponent(-60, 2);
+  for (int trial = 0; trial < trials; ++trial) {
+    const std::size_t k = 1 + gen() % 45;
+    std::vector<Real> a(k + 1), b(k + 1);
+    for (std::size_t i = 0; i <= k; ++i) {
+      a[i] = ldexp(Real(unit(gen)) / 3 + Real(unit(gen)) / 7, exponent(gen));
+      b[i] = ldexp(Real(unit(gen)) / 11 + Real(unit(gen)) / 13, exponent(gen));
+      if (gen() % 10 == 0) a[i] = 0;
+    }
+    if (trial % 3 == 0)  // pairs of products that cancel to their last bits
+      for (std::size_t i = 0; 2 * i < k; ++i)  // a[i] b[k-i] = -a[k-i] b[i]
+        if (a[i] != 0) b[k - i] = -a[k - i] * b[i] / a[i];
+    const std::size_t lo = gen() % 2, hi = k - gen() % 2;
+    Real got;
+    viscor::detail::mpfr_dot(got.backend().data(), a.data(), b.data(), k, lo, hi);
+    mpfr_t wide, product, magnitude, rounded, ulps;
+    mpfr_inits2(2000, wide, product, magnitude, (mpfr_ptr)0);
+    mpfr_init2(rounded, mpfr_get_prec(got.backend().data()));
+    mpfr_init2(ulps, 64);
+    mpfr_set_zero(wide, 1), mpfr_set_zero(magnitude, 1);
+    for (std::size_t j = lo; j <= hi; ++j) {
+      mpfr_mul(product, a[j].backend().data(), b[k - j].backend().data(), MPFR_RNDN);
+      mpfr_add(wide, wide, product, MPFR_RNDN);
+      mpfr_abs(product, product, MPFR_RNDN);
+      mpfr_add(magnitude, magnitude, product, MPFR_RNDN);
+    }
+    if (!mpfr_zero_p(magnitude)) {
+      mpfr_sub(product, got.backend().data(), wide, MPFR_RNDN);
+      mpfr_div(product, product, magnitude, MPFR_RNDN);
+      mpfr_mul_2si(product, product, mpfr_get_prec(rounded) - 1, MPFR_RNDN);
+      worst_of_bound = std::max(worst_of_bound, std::abs(mpfr_get_d(product, MPFR_RNDN)) / static_cast<double>(hi - lo + 2));
+    }
+    mpfr_set(rounded, wide, MPFR_RNDN);
+    if (mpfr_equal_p(rounded, got.backend().data())) {
+      ++correctly_rounded;
+    } else {
+      mpfr_sub(ulps, got.backend().data(), rounded, MPFR_RNDN);
+      mpfr_mul_2si(ulps, ulps, mpfr_get_prec(rounded) - mpfr_get_exp(rounded), MPFR_RNDN);
+      worst_ulps = std::max(worst_ulps, static_cast<int>(std::ceil(std::abs(mpfr_get_d(ulps, MPFR_RNDN)))));
+    }
+    mpfr_clears(wide, product, magnitude, rounded, ulps, (mpfr_ptr)0);
+  }
+}
+
+TEST(MpfrDot, FixedPointSumIsCorrectlyRoundedAt50Digits) {
+  int correctly_rounded = 0, worst_ulps = 0;
+  double worst_of_bound = 0;
+  check_dot_against_wide_sum<viscor::mpfr_50>(7, 3000, correctly_rounded, worst_ulps, worst_of_bound);
+  EXPECT_LE(worst_ulps, 1);
+  EXPECT_GE(correctly_rounded, 2970) << "of 3000";
+}
+
+TEST(MpfrDot, FixedPointSumIsCorrectlyRoundedAt100Digits) {
+  int correctly_rounded = 0, worst_ulps = 0;
+  double worst_of_bound = 0;
+  check_dot_against_wide_sum<viscor::mpfr_100>(11, 2000, correctly_rounded, worst_ulps, worst_of_bound);
+  EXPECT_LE(worst_ulps, 1);
+  EXPECT_GE(correctly_rounded, 1980) << "of 2000";
+}
+
+TEST(MpfrDot, AboveTheLimbLimitSumsAsBefore) {
+  // 200 digits: 11 limbs, past fixed_point_dot_limbs: one rounding per product and sum.
+  viscor::scoped_precision digits(200);
+  const viscor::mpfr_real probe = 1;
+  ASSERT_GT((mpfr_get_prec(probe.backend().data()) + 63) / 64, static_cast<long>(viscor::detail::fixed_point_dot_limbs));
+  int correctly_rounded = 0, worst_ulps = 0;
+  double worst_of_bound = 0;
+  check_dot_against_wide_sum<viscor::mpfr_real>(13, 300, correctly_rounded, worst_ulps, worst_of_bound);
+  EXPECT_LE(worst_of_bound, 1.0);  // within one rounding per product and sum
+  EXPECT_GT(worst_ulps, 1);        // and not the fixed-point sum: cancellations cost it ulps
+}
+#endif

@@ -8,14 +8,18 @@
 //
 // NOTE: these loops are the whole cost of an integration, so no function
 // allocates. Sums of products run in a local accumulator for the built-in and
-// float128 types (out may alias the inputs, which keeps a sum into it in memory),
-// and on MPFR's raw mpfr_mul + mpfr_add into a scratch variable (Boost turns
-// x += a * b into a slower mpfr_fma). Measurements: docs/performance.md.
+// float128 types (out may alias the inputs, which keeps a sum into it in memory);
+// on MPFR values up to fixed_point_dot_limbs limbs as an exact fixed-point sum of
+// GMP limb products rounded once (mpfr_dot: about half the time of an mpfr_mul +
+// mpfr_add per term, and more accurate), above that on MPFR's raw mpfr_mul +
+// mpfr_add into a scratch variable (Boost turns x += a * b into a slower
+// mpfr_fma). Measurements: docs/performance.md.
 #pragma once
 
 #include <viscor/core/detail/log_abs.hpp>
 #include <viscor/core/real_types.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <type_traits>
@@ -45,15 +49,85 @@ mpfr_srcptr raw(const Real& x) {
   return x.backend().data();
 }
 
-/// acc = sign * sum_{j=lo}^{hi} a[j] * b[k - j] on raw MPFR values.
+/// acc = sum_{j=lo}^{hi} a[j] * b[k - j], one product and one sum at a time (the
+/// general path: any precisions, special values).
 template <class Real>
-void mpfr_dot(mpfr_ptr acc, const Real* a, const Real* b, std::size_t k, std::size_t lo, std::size_t hi) {
+void mpfr_dot_rounded(mpfr_ptr acc, const Real* a, const Real* b, std::size_t k, std::size_t lo, std::size_t hi) {
   mpfr_ptr t = mpfr_scratch(mpfr_get_prec(acc));
   mpfr_set_zero(acc, 1);
   for (std::size_t j = lo; j <= hi; ++j) {
     mpfr_mul(t, raw(a[j]), raw(b[k - j]), MPFR_RNDN);
     mpfr_add(acc, acc, t, MPFR_RNDN);
   }
+}
+
+/// The most limbs for which mpfr_dot sums in fixed point (above, MPFR's short
+/// products beat the full products the fixed-point sum needs).
+inline constexpr std::size_t fixed_point_dot_limbs = 8;
+
+/// acc = sum_{j=lo}^{hi} a[j] * b[k - j] on raw MPFR values, with one rounding:
+/// the exact products (GMP limb products) are added in a fixed-point window of
+/// 2n + 2 limbs whose top limb is headroom and whose bottom limb is below every
+/// bit of the largest product, so the only errors are bits of products more than
+/// 64 (2n + 1) bits below the largest, truncated, then the final rounding to acc.
+/// Falls back to mpfr_dot_rounded for mixed precisions, special values or more
+/// than fixed_point_dot_limbs limbs.
+template <class Real>
+void mpfr_dot(mpfr_ptr acc, const Real* a, const Real* b, std::size_t k, std::size_t lo, std::size_t hi) {
+  const mpfr_prec_t prec = mpfr_get_prec(acc);
+  const std::size_t n = static_cast<std::size_t>((prec + GMP_NUMB_BITS - 1) / GMP_NUMB_BITS);
+  if (n > fixed_point_dot_limbs || lo > hi) return mpfr_dot_rounded(acc, a, b, k, lo, hi);
+  constexpr long bits = GMP_NUMB_BITS;
+  mpfr_exp_t top = 0;
+  bool any = false;
+  for (std::size_t j = lo; j <= hi; ++j) {
+    mpfr_srcptr x = raw(a[j]), y = raw(b[k - j]);
+    if (mpfr_get_prec(x) != prec || mpfr_get_prec(y) != prec || !mpfr_number_p(x) || !mpfr_number_p(y))
+      return mpfr_dot_rounded(acc, a, b, k, lo, hi);
+    if (mpfr_zero_p(x) || mpfr_zero_p(y)) continue;
+    const mpfr_exp_t e = mpfr_get_exp(x) + mpfr_get_exp(y);
+    if (!any || e > top) top = e, any = true;
+  }
+  if (!any) return (void)mpfr_set_zero(acc, 1);
+  const std::size_t w = 2 * n + 2;
+  mp_limb_t pos[2 * fixed_point_dot_limbs + 2] = {}, neg[2 * fixed_point_dot_limbs + 2] = {};
+  mp_limb_t product[2 * fixed_point_dot_limbs + 1], shifted[2 * fixed_point_dot_limbs + 1];
+  for (std::size_t j = lo; j <= hi; ++j) {
+    mpfr_srcptr x = raw(a[j]), y = raw(b[k - j]);
+    if (mpfr_zero_p(x) || mpfr_zero_p(y)) continue;
+    mpn_mul_n(product, static_cast<const mp_limb_t*>(mpfr_custom_get_significand(x)),
+              static_cast<const mp_limb_t*>(mpfr_custom_get_significand(y)), static_cast<mp_size_t>(n));
+    // The product's 2n limbs sit one limb up in the window when it is the largest,
+    // lower by top - e bits otherwise.
+    const long offset = bits - static_cast<long>(top - (mpfr_get_exp(x) + mpfr_get_exp(y)));
+    mp_limb_t* sum = (mpfr_signbit(x) != mpfr_signbit(y)) ? neg : pos;
+    if (offset >= 0) {
+      const std::size_t q = static_cast<std::size_t>(offset / bits);
+      const unsigned r = static_cast<unsigned>(offset % bits);
+      shifted[2 * n] = r ? mpn_lshift(shifted, product, static_cast<mp_size_t>(2 * n), r) : 0;
+      if (!r) std::copy(product, product + 2 * n, shifted);
+      mpn_add(sum + q, sum + q, static_cast<mp_size_t>(w - q), shifted, static_cast<mp_size_t>(2 * n + 1));
+    } else {
+      const std::size_t q = static_cast<std::size_t>(-offset / bits);
+      if (q >= 2 * n) continue;  // entirely below the window
+      const unsigned r = static_cast<unsigned>(-offset % bits);
+      const mp_size_t len = static_cast<mp_size_t>(2 * n - q);
+      if (r) mpn_rshift(shifted, product + q, len, r);
+      else std::copy(product + q, product + 2 * n, shifted);
+      mpn_add(sum, sum, static_cast<mp_size_t>(w), shifted, len);
+    }
+  }
+  const bool negative = mpn_cmp(pos, neg, static_cast<mp_size_t>(w)) < 0;
+  if (negative) mpn_sub_n(pos, neg, pos, static_cast<mp_size_t>(w));
+  else mpn_sub_n(pos, pos, neg, static_cast<mp_size_t>(w));
+  mp_size_t size = static_cast<mp_size_t>(w);
+  while (size > 0 && pos[size - 1] == 0) --size;
+  if (size == 0) return (void)mpfr_set_zero(acc, 1);
+  mpz_t z;
+  mpz_roinit_n(z, pos, negative ? -size : size);
+  // The window's unit: the largest product's lowest bit is at window bit 64, and that
+  // product's value is (2n-limb integer) * 2^(top - 128 n).
+  mpfr_set_z_2exp(acc, z, top - static_cast<mpfr_exp_t>(2 * n) * bits - bits, MPFR_RNDN);
 }
 #endif
 
