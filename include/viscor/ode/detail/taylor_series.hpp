@@ -80,13 +80,16 @@ void mpfr_dot(mpfr_ptr acc, const Real* a, const Real* b, std::size_t k, std::si
   constexpr long bits = GMP_NUMB_BITS;
   mpfr_exp_t top = 0;
   bool any = false;
+  // (mpfr.h's macros, not calls: these checks run once per term.)
   for (std::size_t j = lo; j <= hi; ++j) {
     mpfr_srcptr x = raw(a[j]), y = raw(b[k - j]);
-    if (mpfr_get_prec(x) != prec || mpfr_get_prec(y) != prec || !mpfr_number_p(x) || !mpfr_number_p(y))
+    if (mpfr_get_prec(x) != prec || mpfr_get_prec(y) != prec) return mpfr_dot_rounded(acc, a, b, k, lo, hi);
+    if (mpfr_regular_p(x) && mpfr_regular_p(y)) {
+      const mpfr_exp_t e = mpfr_get_exp(x) + mpfr_get_exp(y);
+      if (!any || e > top) top = e, any = true;
+    } else if (mpfr_nan_p(x) || mpfr_nan_p(y) || mpfr_inf_p(x) || mpfr_inf_p(y)) {
       return mpfr_dot_rounded(acc, a, b, k, lo, hi);
-    if (mpfr_zero_p(x) || mpfr_zero_p(y)) continue;
-    const mpfr_exp_t e = mpfr_get_exp(x) + mpfr_get_exp(y);
-    if (!any || e > top) top = e, any = true;
+    }  // else a zero factor: no term
   }
   if (!any) return (void)mpfr_set_zero(acc, 1);
   const std::size_t w = 2 * n + 2;
@@ -94,7 +97,7 @@ void mpfr_dot(mpfr_ptr acc, const Real* a, const Real* b, std::size_t k, std::si
   mp_limb_t product[2 * fixed_point_dot_limbs + 1], shifted[2 * fixed_point_dot_limbs + 1];
   for (std::size_t j = lo; j <= hi; ++j) {
     mpfr_srcptr x = raw(a[j]), y = raw(b[k - j]);
-    if (mpfr_zero_p(x) || mpfr_zero_p(y)) continue;
+    if (!mpfr_regular_p(x) || !mpfr_regular_p(y)) continue;
     mpn_mul_n(product, static_cast<const mp_limb_t*>(mpfr_custom_get_significand(x)),
               static_cast<const mp_limb_t*>(mpfr_custom_get_significand(y)), static_cast<mp_size_t>(n));
     // The product's 2n limbs sit one limb up in the window when it is the largest,
