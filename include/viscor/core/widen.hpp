@@ -56,3 +56,30 @@ Real narrow(const W& x, [[maybe_unused]] unsigned real_digits10) {
 }
 
 }  // namespace viscor::detail
+
+#if defined(VISCOR_HAS_QD) && VISCOR_HAS_QD && VISCOR_HAS_MPFR
+#include <viscor/core/double_double.hpp>
+
+namespace viscor::detail {
+/// A double_double exactly in run-time MPFR (hi + lo, at least 2 x 53 bits apart at
+/// most 2^-969 down: the thread's working precision, >= 31 digits, holds it for the
+/// solvers' values).
+template <>
+inline mpfr_real widen<mpfr_real, double_double>(const double_double& x) {
+  mpfr_real y(x.hi());
+  const unsigned wanted = mpfr_real::thread_default_precision();
+  if (y.precision() < wanted) y.precision(wanted);
+  y += x.lo();
+  return y;
+}
+/// Run-time MPFR rounded to double_double: hi the nearest double, lo the remainder's
+/// nearest double (within 2^-106 relative from 2^-969 up).
+template <>
+inline double_double narrow<double_double, mpfr_real>(const mpfr_real& x, unsigned) {
+  const double hi = x.convert_to<double>();
+  if (!std::isfinite(hi) || hi == 0) return double_double(hi);
+  const mpfr_real rest = x - hi;
+  return double_double(dd_real::add(hi, rest.convert_to<double>()));
+}
+}  // namespace viscor::detail
+#endif
