@@ -218,6 +218,17 @@ TEST(DoubleDoubleRange, RefusesValuesBelowItsFullPrecision) {
     }
   }
   EXPECT_THROW(solve_impact_double_double(law, double_double(1), double_double(-1e-300)), precision_unavailable);
+  // solve_impact<double_double> itself refuses the result: 1 - e below the bound.
+  for (const integration_method method : {integration_method::taylor, integration_method::adaptive}) {
+    solve_options<double_double> options;
+    options.method = method;
+    try {
+      const impact_result<double_double> r = solve_impact<double_double>(law, double_double(1e-300), 0, options);
+      FAIL() << to_string(method) << ": 1 - e = " << to_decimal_string(r.one_minus_e) << " accepted";
+    } catch (const precision_unavailable& error) {
+      EXPECT_NE(std::string(error.what()).find("1 - e"), std::string::npos) << error.what();
+    }
+  }
 }
 
 TEST(DoubleDoubleRange, SmallGammaAboveTheBoundKeepsItsDigits) {

@@ -623,6 +623,24 @@ inline double_double parse_real<double_double>(const std::string& text, const st
   return x;
 }
 
+/// The smallest nonzero magnitude that a double-double solve accepts as an input or
+/// reports as a value: 2^-939, i.e. 2^30 above 2^-969, where the lo part becomes
+/// subnormal. NOTE: below 2^-969 each operation adds an absolute error of up to 2^-1075
+/// (the lo part's rounding) besides its relative error; a value of at least 2^-939,
+/// reached in fewer than 2^30 operations, keeps that share below 2^-105 relative.
+inline double double_double_smallest_reported() { return std::ldexp(1.0, -939); }
+
+namespace detail {
+/// Throws precision_unavailable when x is nonzero, finite and below
+/// double_double_smallest_reported() in magnitude; `what` names the value.
+inline void require_double_double_range(const double_double& x, const std::string& what) {
+  if (x.hi() == 0 || !std::isfinite(x.hi()) || std::fabs(x.hi()) >= double_double_smallest_reported()) return;
+  throw precision_unavailable(what + " = " + to_decimal_string(x, 6) +
+                              " is below 2^-939 = 2.2e-283, where double-double (double's exponent range) no "
+                              "longer carries its 31 digits; solve in MPFR instead");
+}
+}  // namespace detail
+
 inline std::ostream& double_double_math::operator<<(std::ostream& out, const double_double& x) {
   const std::streamsize p = out.precision();
   return out << to_decimal_string(x, p > 0 ? static_cast<int>(p) + 1 : 0);
