@@ -128,6 +128,9 @@ TEST(DoubleDouble, FunctionsAgainstMpfr) {
   RecordProperty("worst_pow_eps", std::to_string(worst_pow / eps));
   // Integer exponents, frexp and the rounding functions.
   EXPECT_EQ(pow(double_double(3), 4), 81);
+  EXPECT_EQ(pow(double_double(0), 0), 1);
+  EXPECT_EQ(double_double(std::numeric_limits<long double>::infinity()), std::numeric_limits<double_double>::infinity());
+  EXPECT_EQ(exact(double_double(0.1L)), mpfr_float_100(0.1L));  // an x87 long double, exactly
   EXPECT_EQ(pow(double_double(2), std::int64_t{-3}), 0.125);
   int e = 0;
   const double_double m = frexp(double_double(0.5) - ldexp(double_double(1), -80), &e);  // hi 0.5, lo < 0

@@ -10,7 +10,8 @@
 //   a + b, a - b   Briggs-Kahan addition (QD's ieee_add; QD's default "sloppy" add has
 //                  no relative bound under cancellation and is never used here):
 //                  relative error <= 3u^2 / (1 - 4u)
-//   a * b          QD's product without FMA: <= 7u^2
+//   a * b          QD's product (exact partial product by Dekker's split, or by FMA
+//                  where the compiler targets it): <= 7u^2
 //   a / b          QD's division: <= 15u^2 + 56u^3
 //   with a double  operand: within the same bounds
 // (+ - * / are QD's algorithms written out in detail::dd_kernels, so that they inline),
@@ -18,18 +19,20 @@
 // digits = 104 as QD's own numeric_limits says): 31 decimal digits
 // (decimal_digits_of_binary(104)). QD states no bound for sqrt, exp and log (one Newton
 // step from the double result); tests/double_double_test.cpp measures them against
-// MPFR. pow is computed here (not QD's exp(b log a)), so that its error does not grow
-// with |b log a|. Certification's agreement rule catches what these rules miss.
+// MPFR (and holds sqrt within 2, exp and log within 4, pow within 8 epsilon). pow is
+// computed here (not QD's exp(b log a)), so that its error does not grow with |b log a|.
+// Certification's agreement rule catches what these rules miss.
 //
 // Limits: the exponent range is double's, and the lo part is an ordinary double, so a
 // value keeps its 104 bits only for |x| >= 2^-969 (about 2.0e-292,
 // std::numeric_limits<double_double>::min()); below it the lo part is subnormal and the
 // value carries fewer digits. parse_real refuses such inputs, to_decimal_string prints
-// only the digits such a value carries, and carries_full_precision tells a caller whether
-// a result is in the range where the rules above hold.
+// only the digits such a value carries, carries_full_precision tells a caller whether a
+// value is in the range where the rules above hold, and solve_impact<double_double>
+// refuses a result with a value below 2^-939 (double_double_smallest_reported).
 //
 // Available where CMake found QD (target viscor::double_double, which defines
-// VISCOR_HAS_QD=1 and links libqd); include this header before any QD header.
+// VISCOR_HAS_QD=1 and links libqd).
 #pragma once
 
 #include <viscor/core/real_io.hpp>
@@ -188,7 +191,7 @@ class double_double {
   /// The long double x, exactly (an x87 long double has 64 bits).
   double_double(long double x) {
     const double hi = static_cast<double>(x);
-    m_v = dd_real::add(hi, static_cast<double>(x - static_cast<long double>(hi)));
+    m_v = std::isfinite(hi) ? dd_real::add(hi, static_cast<double>(x - static_cast<long double>(hi))) : dd_real(hi);
   }
   /// The integer n, exactly (64-bit integers split into two doubles).
   template <std::integral I>
@@ -476,7 +479,9 @@ inline double_double atan2(const double_double& y, const double_double& x) {
   return double_double(atan2(y.qd(), x.qd()));
 }
 /// x^n for an integer n (repeated squaring: about 2 log2|n| products).
-inline double_double pow(const double_double& x, int n) { return double_double(npwr(x.qd(), n)); }
+inline double_double pow(const double_double& x, int n) {
+  return n == 0 ? double_double(1.0) : double_double(npwr(x.qd(), n));  // QD's npwr(0, 0) reports an error
+}
 /// x^n for an integer n of another integer type (|n| < 2^31).
 template <std::integral I>
 double_double pow(const double_double& x, I n) {
