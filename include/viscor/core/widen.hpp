@@ -61,9 +61,10 @@ Real narrow(const W& x, [[maybe_unused]] unsigned real_digits10) {
 #include <viscor/core/double_double.hpp>
 
 namespace viscor::detail {
-/// A double_double exactly in run-time MPFR (hi + lo, at least 2 x 53 bits apart at
-/// most 2^-969 down: the thread's working precision, >= 31 digits, holds it for the
-/// solvers' values).
+/// A double_double in run-time MPFR at the thread's working precision (at least 31
+/// digits): hi + lo rounded once, exact whenever that precision spans the bits from hi's
+/// leading one to lo's last (a GBS solve's 57 digits span any pair within 2^-137 of each
+/// other); otherwise off by that one rounding, far below double-double's own error.
 template <>
 inline mpfr_real widen<mpfr_real, double_double>(const double_double& x) {
   mpfr_real y(x.hi());
