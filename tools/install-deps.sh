@@ -25,6 +25,7 @@ packages=(
   lammps liggghts           # DEM programs run by tests/dem_drop_*test.cpp (docs/dem.md)
   doxygen                   # API reference: cmake --build build --target doc
   libflint-arb-dev          # Arb ball arithmetic: proven enclosures, include/viscor/enclose (docs/proofs.md)
+  libqd-dev                 # QD's double-double: include/viscor/core/double_double.hpp (docs/precision.md)
   pybind11-dev python3-dev  # Python module viscor (docs/python.md)
   python3-numpy python3-mpmath  # its vectorised evaluate and tests; Result.mpf
   yade                      # DEM program run by tests/yade_drop_*test.cpp (docs/dem.md, YADE 2023.02a)

@@ -59,3 +59,30 @@ impact_result<Real> solve_impact(const contact_law& law, const Real& gamma, cons
 }
 
 }  // namespace viscor
+
+#if defined(VISCOR_HAS_QD) && VISCOR_HAS_QD
+#include <viscor/core/double_double.hpp>
+
+namespace viscor::detail {
+/// double_double: precision_unavailable where e, 1 - e, the contact time, the maximal
+/// compression, its time or the stop overlap is nonzero and below 2^-939
+/// (double_double_smallest_reported, core/double_double.hpp), where double-double has
+/// lost digits to its exponent range; then the energy rule of the template above.
+template <>
+inline impact_result<double_double> undecided_unless_energy_allows<double_double>(impact_result<double_double> r) {
+  require_double_double_range(r.e, "e");
+  require_double_double_range(r.one_minus_e, "1 - e");
+  require_double_double_range(r.contact_time, "the contact time");
+  require_double_double_range(r.max_compression, "the maximal compression");
+  require_double_double_range(r.time_of_max_compression, "the time of maximal compression");
+  require_double_double_range(r.stop_overlap, "the stop overlap");
+  // NOTE: the template's rule, written again: an explicit specialization cannot call it.
+  if (r.outcome != impact_outcome::rebound || r.e <= 1 + 16 * epsilon<double_double>()) return r;
+  r.outcome = impact_outcome::undecided;
+  r.error_estimate = r.e;
+  r.e = 0, r.one_minus_e = 1, r.energy_residual = 0;
+  r.contact_time = std::numeric_limits<double_double>::quiet_NaN();
+  return r;
+}
+}  // namespace viscor::detail
+#endif

@@ -530,3 +530,14 @@ class gbs_integrator {
 };
 
 }  // namespace viscor
+
+#if defined(VISCOR_HAS_QD) && VISCOR_HAS_QD
+#include <viscor/core/double_double.hpp>
+
+namespace viscor::detail {
+/// double_double: 10 or more guard digits, as for long double and float128 (float128's
+/// 33 digits are too few: mpfr_real at 31 + 10 + 31/8 digits filled to the limb, 57).
+template <>
+struct gbs_work<double_double> : gbs_work_by_width<double_double, 10> {};
+}  // namespace viscor::detail
+#endif

@@ -30,3 +30,15 @@ double log_abs(const Real& x) {
 }
 
 }  // namespace viscor::detail
+
+#if defined(VISCOR_HAS_QD) && VISCOR_HAS_QD
+#include <viscor/core/double_double.hpp>
+
+namespace viscor::detail {
+/// log_abs for double_double: its hi part has the magnitude (and double's exponent range).
+template <>
+inline double log_abs<double_double>(const double_double& x) {
+  return std::log(std::fabs(x.hi()));
+}
+}  // namespace viscor::detail
+#endif

@@ -1,0 +1,251 @@
+// The double-double scalar (include/viscor/core/double_double.hpp) against MPFR: its
+// decimal input and output, the functions the solvers use, solve_impact for the five
+// named laws against MPFR solves at 20 more digits (51), and its exponent limit
+// (include/viscor/impact/double_double_impact.hpp). Built only where QD is found.
+#include <viscor/core/double_double.hpp>
+#include <viscor/impact/double_double_impact.hpp>
+#include <viscor/impact/solve_impact.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace viscor;
+using boost::multiprecision::mpfr_float_100;
+
+// The exact value hi + lo (100 decimal digits, 336 bits, hold it for |x| >= 2^-969 away
+// from the largest exponents used here).
+mpfr_float_100 exact(const double_double& x) {
+  mpfr_float_100 y(x.hi());
+  y += x.lo();
+  return y;
+}
+
+// |x - ref| / |ref| in double (an error size, not a value).
+double relative_error(const double_double& x, const mpfr_float_100& ref) {
+  return static_cast<double>(mpfr_float_100(abs(exact(x) - ref) / abs(ref)));
+}
+
+TEST(DoubleDouble, CarriesThirtyOneDigits) {
+  EXPECT_EQ(std::numeric_limits<double_double>::digits, 104);
+  EXPECT_EQ(binary_digits<double_double>(), 104);
+  EXPECT_EQ(decimal_digits<double_double>(), 31);
+  EXPECT_EQ(fixed_decimal_digits<double_double>(), 31);
+  EXPECT_EQ(epsilon<double_double>(), double_double(std::ldexp(1.0, -103)));
+  EXPECT_EQ(std::numeric_limits<double_double>::min(), double_double(std::ldexp(1.0, -969)));
+  EXPECT_TRUE(has_fixed_precision<double_double>());
+}
+
+TEST(DoubleDouble, IntegersConvertExactly) {
+  for (const std::int64_t n : {std::int64_t{0}, std::int64_t{-7}, std::int64_t{1} << 53, (std::int64_t{1} << 53) + 1,
+                               std::numeric_limits<std::int64_t>::max(), std::numeric_limits<std::int64_t>::min() + 1}) {
+    EXPECT_EQ(exact(double_double(n)), mpfr_float_100(n)) << n;
+    EXPECT_EQ(static_cast<std::int64_t>(double_double(n)), n) << n;
+  }
+  const std::uint64_t u = std::numeric_limits<std::uint64_t>::max();
+  EXPECT_EQ(exact(double_double(u)), mpfr_float_100(u));
+  EXPECT_EQ(exact(double_double(3) * (std::int64_t{1} << 60)), mpfr_float_100(3) * mpfr_float_100(std::int64_t{1} << 60));
+}
+
+TEST(DoubleDouble, DecimalInputWithin2ToMinus105) {
+  for (const char* text : {"0.1", "1e-3", "0.05", "3.14159265358979323846264338327950288419716939937510",
+                           "-2.5e100", "1e-290", "6.02214076e23", "1.7976931348623157e308", "123456789.123456789"}) {
+    const double_double x = parse_real<double_double>(text, "x");
+    const mpfr_float_100 ref(text);
+    EXPECT_LE(relative_error(x, ref), std::ldexp(1.0, -105)) << text;
+    EXPECT_LE(std::fabs(x.lo()), std::ldexp(std::fabs(x.hi()), -53)) << text;  // normalised
+  }
+  EXPECT_EQ(parse_real<double_double>("0", "x"), 0);
+  EXPECT_EQ(parse_real<double_double>("-0.000e5", "x"), 0);
+  EXPECT_EQ(double_double("0.25"), 0.25);
+  EXPECT_THROW(parse_real<double_double>("1e400", "gamma"), invalid_parameter);
+  EXPECT_THROW(parse_real<double_double>("0.1x", "gamma"), invalid_parameter);
+  try {
+    parse_real<double_double>("1e-300", "gamma");  // above double's range, below double-double's full precision
+    FAIL() << "1e-300 accepted";
+  } catch (const invalid_parameter& error) {
+    EXPECT_NE(std::string(error.what()).find("underflows the working precision"), std::string::npos) << error.what();
+  }
+}
+
+TEST(DoubleDouble, PrintsAtMostTheDigitsItCarries) {
+  const double_double third = double_double(1) / 3;
+  const std::string s = to_decimal_string(third);
+  EXPECT_EQ(s, "3.333333333333333333333333333333e-01");
+  EXPECT_EQ(to_decimal_string(third, 40), s);                    // never more than 31
+  EXPECT_EQ(to_decimal_string(third, roundtrip_digits<double_double>()), s);
+  EXPECT_EQ(to_decimal_string(third, 5), "3.3333e-01");
+  // The exact value hi + lo correctly rounded, as MPFR prints it.
+  for (const char* text : {"0.1", "2.718281828459045235360287471352662497757", "-9.87654321e-200", "1e300"}) {
+    const double_double x = parse_real<double_double>(text, "x");
+    EXPECT_EQ(to_decimal_string(x), to_decimal_string(exact(x), 31)) << text;
+  }
+  // Below 2^-969 the lo part is subnormal: fewer digits printed.
+  const double_double tiny = ldexp(third, -1000);
+  const std::string t = to_decimal_string(tiny);
+  const std::size_t mantissa_digits = t.find('e') - 1;  // "d." then the rest
+  EXPECT_LT(mantissa_digits, 31u) << t;
+  EXPECT_GE(mantissa_digits, 15u) << t;
+  EXPECT_EQ(to_decimal_string(double_double(0)), "0.000000000000000000000000000000e+00");
+  EXPECT_EQ(to_decimal_string(std::numeric_limits<double_double>::infinity()), "inf");
+}
+
+TEST(DoubleDouble, FunctionsAgainstMpfr) {
+  using std::exp;
+  using std::log;
+  using std::pow;
+  using std::sqrt;
+  double worst_sqrt = 0, worst_exp = 0, worst_log = 0, worst_pow = 0;
+  for (const char* text : {"0.1", "0.7", "1.3", "2.5", "17.25", "1e-5", "3e-20", "1e-250", "4.5e200"}) {
+    const double_double x = parse_real<double_double>(text, "x");
+    const mpfr_float_100 xr = exact(x);
+    worst_sqrt = std::max(worst_sqrt, relative_error(sqrt(x), sqrt(xr)));
+    worst_log = std::max(worst_log, relative_error(log(x), log(xr)));
+    if (xr < 600) worst_exp = std::max(worst_exp, relative_error(exp(x), exp(xr)));
+    // The solvers' rational exponents; far from 1 where exp(y ln x) would lose digits.
+    for (const int q : {2, 3, 4, 5, 7}) {
+      for (const int p : {1, 3, 5, 7}) {
+        const double_double y = double_double(p) / q;
+        for (const double_double& z : {y, -y}) {
+          const mpfr_float_100 ref = pow(xr, exact(z));
+          if (ref > 1e-280 && ref < 1e300)  // results in double-double's full range
+            worst_pow = std::max(worst_pow, relative_error(pow(x, z), ref));
+        }
+      }
+    }
+  }
+  const double eps = std::ldexp(1.0, -103);  // epsilon<double_double>()
+  EXPECT_LE(worst_sqrt, 2 * eps);
+  EXPECT_LE(worst_log, 4 * eps);
+  EXPECT_LE(worst_exp, 4 * eps);
+  EXPECT_LE(worst_pow, 8 * eps);
+  RecordProperty("worst_sqrt_eps", std::to_string(worst_sqrt / eps));
+  RecordProperty("worst_pow_eps", std::to_string(worst_pow / eps));
+  // Integer exponents, frexp and the rounding functions.
+  EXPECT_EQ(pow(double_double(3), 4), 81);
+  EXPECT_EQ(pow(double_double(0), 0), 1);
+  EXPECT_EQ(double_double(std::numeric_limits<long double>::infinity()), std::numeric_limits<double_double>::infinity());
+  EXPECT_EQ(exact(double_double(0.1L)), mpfr_float_100(0.1L));  // an x87 long double, exactly
+  EXPECT_EQ(pow(double_double(2), std::int64_t{-3}), 0.125);
+  int e = 0;
+  const double_double m = frexp(double_double(0.5) - ldexp(double_double(1), -80), &e);  // hi 0.5, lo < 0
+  EXPECT_GE(abs(m), 0.5);
+  EXPECT_LT(abs(m), 1);
+  EXPECT_EQ(ldexp(m, e), double_double(0.5) - ldexp(double_double(1), -80));
+  EXPECT_EQ(floor(double_double(2.5)), 2);
+  EXPECT_EQ(ceil(double_double(-2.5)), -2);
+  EXPECT_EQ(static_cast<int>(double_double(-2.75)), -2);
+}
+
+struct law_point {
+  const char* law;
+  const char* gamma;
+  const char* g;
+};
+
+// The 45 points of the bench table of docs/performance.md (five named laws x gamma in
+// {1e-3, 1e-2, 0.1} x g in {0, 0.05, 1}), and a few more of each law's range.
+std::vector<law_point> law_points() {
+  std::vector<law_point> points;
+  for (const char* law : {"linear", "hertz_linear_damping", "tsuji", "kuwabara_kono", "hunt_crossley"})
+    for (const char* gamma : {"1e-3", "1e-2", "0.1"})
+      for (const char* g : {"0", "0.05", "1"}) points.push_back({law, gamma, g});
+  points.push_back({"linear", "2", "-3"});
+  points.push_back({"tsuji", "0.5", "0"});
+  points.push_back({"kuwabara_kono", "0.05", "1"});
+  points.push_back({"hunt_crossley", "1e-6", "0"});
+  return points;
+}
+
+class DoubleDoubleSolve : public ::testing::TestWithParam<law_point> {};
+
+TEST_P(DoubleDoubleSolve, TaylorRightTo31DigitsAgainstMpfr51) {
+  const law_point p = GetParam();
+  const contact_law law = law_by_name(p.law);
+  const impact_result<double_double> r =
+      solve_impact<double_double>(law, parse_real<double_double>(p.gamma, "gamma"), parse_real<double_double>(p.g, "g"));
+  scoped_precision digits(51);
+  const impact_result<mpfr_real> ref =
+      solve_impact<mpfr_real>(law, parse_real<mpfr_real>(p.gamma, "gamma"), parse_real<mpfr_real>(p.g, "g"));
+  ASSERT_EQ(r.outcome, ref.outcome);
+  const mpfr_float_100 e_ref(ref.e), one_minus_e_ref(ref.one_minus_e);
+  const double e_error = static_cast<double>(mpfr_float_100(abs(exact(r.e) - e_ref)));
+  EXPECT_LE(e_error, 1e-30) << "e = " << to_decimal_string(r.e) << ", MPFR " << to_decimal_string(ref.e, 40);
+  EXPECT_LE(e_error, static_cast<double>(r.error_estimate) + 1e-33) << "beyond the solver's own error estimate";
+  if (r.outcome == impact_outcome::rebound)
+    EXPECT_LE(relative_error(r.one_minus_e, one_minus_e_ref), 1e-30) << to_decimal_string(r.one_minus_e);
+  // Printed: never more than the 31 digits the type carries.
+  const std::string printed = to_decimal_string(r.e, 40);
+  EXPECT_LE(printed.find('e') - (printed.find('.') == std::string::npos ? 0 : 1), 31u) << printed;
+  // The checked entry point gives the same result in this range.
+  const impact_result<double_double> checked = solve_impact_double_double(
+      law, parse_real<double_double>(p.gamma, "gamma"), parse_real<double_double>(p.g, "g"));
+  EXPECT_EQ(checked.e, r.e);
+}
+
+TEST_P(DoubleDoubleSolve, AdaptiveRightTo31DigitsAgainstMpfr51) {
+  const law_point p = GetParam();
+  const contact_law law = law_by_name(p.law);
+  solve_options<double_double> options;
+  options.method = integration_method::adaptive;
+  const impact_result<double_double> r = solve_impact<double_double>(
+      law, parse_real<double_double>(p.gamma, "gamma"), parse_real<double_double>(p.g, "g"), options);
+  scoped_precision digits(51);
+  const impact_result<mpfr_real> ref =
+      solve_impact<mpfr_real>(law, parse_real<mpfr_real>(p.gamma, "gamma"), parse_real<mpfr_real>(p.g, "g"));
+  ASSERT_EQ(r.outcome, ref.outcome);
+  // GBS integrates in MPFR at 57 digits (gbs_work<double_double>) and rounds back.
+  const double e_error = static_cast<double>(mpfr_float_100(abs(exact(r.e) - mpfr_float_100(ref.e))));
+  EXPECT_LE(e_error, 1e-30) << to_decimal_string(r.e);
+  EXPECT_LE(e_error, static_cast<double>(r.error_estimate) + 1e-33) << "beyond the solver's own error estimate";
+}
+
+INSTANTIATE_TEST_SUITE_P(FiveLaws, DoubleDoubleSolve, ::testing::ValuesIn(law_points()));
+
+TEST(DoubleDoubleRange, RefusesValuesBelowItsFullPrecision) {
+  const contact_law law = law_by_name("kuwabara_kono");
+  // gamma = 1e-300: a double, but below 2^-969 (so is 1 - e, about 1.7e-300); 1e-290 and
+  // 1e-283: full double-double numbers, below the solve's bound 2^-939 = 2.2e-283.
+  for (const double gamma : {1e-300, 1e-290, 1e-283}) {
+    try {
+      solve_impact_double_double(law, double_double(gamma), double_double(0));
+      FAIL() << "gamma " << gamma << " accepted";
+    } catch (const precision_unavailable& error) {
+      EXPECT_NE(std::string(error.what()).find("gamma"), std::string::npos) << error.what();
+      EXPECT_NE(std::string(error.what()).find("MPFR"), std::string::npos) << error.what();
+    }
+  }
+  EXPECT_THROW(solve_impact_double_double(law, double_double(1), double_double(-1e-300)), precision_unavailable);
+  // solve_impact<double_double> itself refuses the result: 1 - e below the bound.
+  for (const integration_method method : {integration_method::taylor, integration_method::adaptive}) {
+    solve_options<double_double> options;
+    options.method = method;
+    try {
+      const impact_result<double_double> r = solve_impact<double_double>(law, double_double(1e-300), 0, options);
+      FAIL() << to_string(method) << ": 1 - e = " << to_decimal_string(r.one_minus_e) << " accepted";
+    } catch (const precision_unavailable& error) {
+      EXPECT_NE(std::string(error.what()).find("1 - e"), std::string::npos) << error.what();
+    }
+  }
+}
+
+TEST(DoubleDoubleRange, SmallGammaAboveTheBoundKeepsItsDigits) {
+  // 1 - e about 1.7 gamma, against MPFR at 51 digits: far inside the range and just above
+  // the bound 2^-939 = 2.2e-283.
+  const contact_law law = law_by_name("kuwabara_kono");
+  for (const char* gamma : {"1e-250", "3e-283"}) {
+    const impact_result<double_double> r =
+        solve_impact_double_double(law, parse_real<double_double>(gamma, "gamma"), double_double(0));
+    scoped_precision digits(51);
+    const impact_result<mpfr_real> ref = solve_impact<mpfr_real>(law, parse_real<mpfr_real>(gamma, "gamma"), mpfr_real(0));
+    EXPECT_LE(relative_error(r.one_minus_e, mpfr_float_100(ref.one_minus_e)), 1e-30)
+        << gamma << ": " << to_decimal_string(r.one_minus_e) << " MPFR " << to_decimal_string(ref.one_minus_e, 40);
+  }
+}
+
+}  // namespace
