@@ -141,7 +141,7 @@ inline std::pair<std::string, std::string> certified_reference(const scene_point
   const auto certified = with_working_precision(digits, [&]<class Ref>() -> std::optional<std::pair<std::string, std::string>> {
     const certified_result<Ref> c = certify(p.law, parse_real<Ref>(p.gamma, "gamma"), parse_real<Ref>(p.g, "g"));
     if (!c.outcome_certified) return std::nullopt;
-    if (c.outcome == impact_outcome::rebound && c.certified_digits < needed && c.absolute_digits_e < needed) return std::nullopt;
+    if (c.outcome == impact_outcome::rebound && c.certified_digits < needed && c.certified_absolute_digits_e < needed) return std::nullopt;
     return std::pair<std::string, std::string>(to_decimal_string(c.e), to_decimal_string(c.one_minus_e));
   });
   if (certified) {

@@ -185,7 +185,7 @@ TYPED_TEST(ExactSolutions, LinearUnderAStrongPullKeepsEveryQuantity) {
     ASSERT_EQ(r.outcome, impact_outcome::rebound);
     EXPECT_PRED_FORMAT3(relative_close<Real>, r.e, convert<Real>(ref.e), tolerance<Real>());
     EXPECT_PRED_FORMAT3(relative_close<Real>, r.one_minus_e, convert<Real>(ref.one_minus_e), tolerance<Real>());
-    EXPECT_PRED_FORMAT3(relative_close<Real>, *r.contact_time, convert<Real>(ref.contact_time), tolerance<Real>());
+    EXPECT_PRED_FORMAT3(relative_close<Real>, *r.contact_time, convert<Real>(ref.contact_time.value()), tolerance<Real>());
     EXPECT_PRED_FORMAT3(relative_close<Real>, *r.max_compression, convert<Real>(ref.max_compression),
                         tolerance<Real>());
   }

@@ -46,7 +46,7 @@ TEST(SolveImpactSlow, PrecisionEscalationGrid) {
         ASSERT_EQ(lo.outcome, hi.outcome);
         if (lo.outcome == impact_outcome::stick) {
           EXPECT_EQ(lo.e, 0);
-          EXPECT_GE(test::agreeing_digits(test::convert<mpfr_100>(lo.contact_time), hi.contact_time), 40.0);
+          EXPECT_GE(test::agreeing_digits(test::convert<mpfr_100>(lo.contact_time.value()), hi.contact_time.value()), 40.0);
           continue;
         }
         EXPECT_GE(test::agreeing_digits(test::convert<mpfr_100>(lo.e), hi.e), 47.0);

@@ -81,7 +81,7 @@ void expect_exact(const contact_law& law, const char* gamma_text, const char* g_
   // ill-conditioned as the motion: errors grow like the energy scale (1 + g)^2.
   const Real loose = tol * (1 + abs(g)) * (1 + abs(g));
   EXPECT_LE(abs(r.energy_residual), loose);
-  if (exact.contact_time) EXPECT_PRED_FORMAT3(relative_close<Real>, r.contact_time, *exact.contact_time, loose);
+  if (exact.contact_time) EXPECT_PRED_FORMAT3(relative_close<Real>, r.contact_time.value(), *exact.contact_time, loose);
   if (exact.max_compression)
     EXPECT_PRED_FORMAT3(relative_close<Real>, r.max_compression, *exact.max_compression, loose);
   if (exact.time_of_max_compression)
@@ -179,13 +179,13 @@ TEST(SolveImpact, ReportFigures3And4) {
   EXPECT_EQ(fig3.outcome, impact_outcome::rebound);
   EXPECT_EQ(fig3_truth.outcome, impact_outcome::rebound);
   EXPECT_NEAR(fig3.e, static_cast<double>(fig3_truth.e), 1e-12);
-  EXPECT_NEAR(fig3.contact_time, static_cast<double>(fig3_truth.contact_time), 1e-11 * fig3.contact_time);
+  EXPECT_NEAR(fig3.contact_time.value(), static_cast<double>(fig3_truth.contact_time.value()), 1e-11 * *fig3.contact_time);
   const auto fig4 = solve_impact<double>(law, 0.06, 4.0);
   const auto fig4_truth = solve_impact_adaptive<mpfr_50>(law, mpfr_50("0.06"), mpfr_50(4));
   EXPECT_EQ(fig4.outcome, impact_outcome::stick);
   EXPECT_EQ(fig4_truth.outcome, impact_outcome::stick);
   EXPECT_EQ(fig4.e, 0);
-  EXPECT_GT(fig4.contact_time, fig4.time_of_max_compression);
+  EXPECT_GT(fig4.contact_time.value(), fig4.time_of_max_compression);
   EXPECT_NEAR(fig4.max_compression, static_cast<double>(fig4_truth.max_compression), 1e-11 * fig4.max_compression);
 }
 
@@ -256,15 +256,15 @@ TEST(SolveImpact, AtRestWithoutATrapIsAStickAtAnUnknownTime) {
   const auto r = solve_impact<double>(law_by_name("linear"), 1.9999, 0.5);
   ASSERT_EQ(r.outcome, impact_outcome::stick);
   EXPECT_EQ(r.e, 0);
-  EXPECT_FALSE(std::isinf(r.contact_time)) << r.contact_time;
-  if (!std::isnan(r.contact_time)) EXPECT_NEAR(r.contact_time, *exact.contact_time, 1e-6 * *exact.contact_time);
+  EXPECT_FALSE(r.contact_time && std::isinf(*r.contact_time)) << *r.contact_time;
+  if (r.contact_time) EXPECT_NEAR(*r.contact_time, *exact.contact_time, 1e-6 * *exact.contact_time);
 }
 
 TEST(SolveImpact, StrongDampingCreepsToRest) {
   // Linear law, gamma >= 2, g = 0: overdamped, u and u' reach 0 only asymptotically.
   const auto r = solve_impact<double>(law_by_name("linear"), 1e3, 0.0);
   EXPECT_EQ(r.outcome, impact_outcome::stick);
-  EXPECT_EQ(r.contact_time, std::numeric_limits<double>::infinity());
+  EXPECT_EQ(r.contact_time.value(), std::numeric_limits<double>::infinity());
   // Tsuji creeps exactly when sqrt(5) gamma / 4 >= 1 (Antypov-Elliott), as the barrier says.
   EXPECT_EQ(solve_impact<double>(law_by_name("tsuji"), 1.8, 0.0).outcome, impact_outcome::stick);
   EXPECT_EQ(solve_impact<double>(law_by_name("tsuji"), 1.78, 0.0).outcome, impact_outcome::rebound);
@@ -443,7 +443,7 @@ TEST(SolveImpact, StopOverlapOfAStuckBead) {
       EXPECT_GT(u_stop, 0);
       EXPECT_PRED_FORMAT3(relative_close<mpfr_real>, test::convert<mpfr_real>(r.stop_overlap), u_stop,
                           mpfr_real("1e-45"));
-      EXPECT_PRED_FORMAT3(relative_close<mpfr_real>, test::convert<mpfr_real>(r.contact_time), *exact->contact_time,
+      EXPECT_PRED_FORMAT3(relative_close<mpfr_real>, test::convert<mpfr_real>(r.contact_time.value()), *exact->contact_time,
                           mpfr_real("1e-45"));
     }
   }
@@ -453,7 +453,7 @@ TEST(SolveImpact, StopOverlapOfAStuckBead) {
     const contact_law law = law_by_name(name);
     const auto r = solve_impact<double>(law, 10.0, 1.0 / 3);
     ASSERT_EQ(r.outcome, impact_outcome::stick);
-    EXPECT_EQ(r.contact_time, std::numeric_limits<double>::infinity());
+    EXPECT_EQ(r.contact_time.value(), std::numeric_limits<double>::infinity());
     EXPECT_PRED_FORMAT3(relative_close<double>, std::pow(r.stop_overlap, law.alpha.value<double>()), 1.0 / 3,
                         1e-15);
   }

@@ -189,7 +189,7 @@ class Calibrate(unittest.TestCase):
         L = -math.log(0.9)
         exact_gamma = 2 * L / math.sqrt(math.pi**2 + L**2)
         self.assertAlmostEqual(float(r.gamma), exact_gamma, delta=1e-12)
-        self.assertLessEqual(abs(float(r.e) - 0.9), float(r.e_error) + 1e-15)
+        self.assertLessEqual(abs(float(r.e) - 0.9), float(r.target_bound) + 1e-15)
 
 
 class Table(unittest.TestCase):

@@ -108,14 +108,16 @@ struct certified_computation {
   certified_source source = certified_source::taylor;
   int precision_digits = 0;  ///< decimal digits it computed with
   impact_outcome outcome = impact_outcome::rebound;
-  Real e = 0, one_minus_e = 1, contact_time = 0, max_compression = 0;  ///< rounded to Real
+  Real e = 0, one_minus_e = 1, max_compression = 0;  ///< rounded to Real
+  std::optional<Real> contact_time = Real(0);       ///< rounded to Real; empty: unknown
   std::string e_text, one_minus_e_text, contact_time_text;  ///< at its own full precision
   Real error_estimate = 0;  ///< the method's own estimate (not used for the digits)
   std::size_t steps = 0;
   double seconds = 0;  ///< wall time, for the cost report
   /// Digits on which it agrees with the reference (relative; e also absolute).
-  int digits_e = 0, digits_one_minus_e = 0, digits_contact_time = 0, digits_max_compression = 0;
-  int absolute_digits_e = 0;
+  int certified_digits_e = 0, certified_digits_one_minus_e = 0, certified_digits_contact_time = 0;
+  int certified_digits_max_compression = 0;
+  int certified_absolute_digits_e = 0;
 };
 
 /// A certified coefficient of restitution.
@@ -123,12 +125,14 @@ template <class Real>
 struct certified_result {
   impact_outcome outcome = impact_outcome::rebound;
   bool outcome_certified = true;  ///< false: the computations disagree on rebound versus stick
-  Real e = 0, one_minus_e = 1, contact_time = 0, max_compression = 0;  ///< the reference, rounded to Real
+  Real e = 0, one_minus_e = 1, max_compression = 0;  ///< the reference, rounded to Real
+  std::optional<Real> contact_time = Real(0);       ///< the reference's, rounded to Real; empty: unknown
   int certified_digits = 0;  ///< certified significant digits of e, 1 - e, T_f and u_max (0: none)
   /// Per quantity, before the safety margin: the least agreement of taylor and adaptive with the reference.
-  int digits_e = 0, digits_one_minus_e = 0, digits_contact_time = 0, digits_max_compression = 0;
-  int absolute_digits_e = 0;       ///< certified decimal places of e (-log10 of its absolute spread, minus margin)
-  bool near_sticking = false;      ///< e < 1e-3 or an uncertified outcome: read absolute_digits_e
+  int certified_digits_e = 0, certified_digits_one_minus_e = 0, certified_digits_contact_time = 0;
+  int certified_digits_max_compression = 0;
+  int certified_absolute_digits_e = 0;       ///< certified decimal places of e (-log10 of its absolute spread, minus margin)
+  bool near_sticking = false;      ///< e < 1e-3 or an uncertified outcome: read certified_absolute_digits_e
   int working_digits = 0;          ///< decimal_digits<Real>()
   int safety_margin = 0;
   /// taylor, reference, adaptive, and adaptive at the reference precision where the
@@ -182,10 +186,11 @@ certified_computation<Real> record_narrowed(certified_source source, int digits,
   c.precision_digits = digits;
   c.outcome = r.outcome;
   c.e = narrow<Real>(r.e, caller_digits), c.one_minus_e = narrow<Real>(r.one_minus_e, caller_digits);
-  c.contact_time = narrow<Real>(r.contact_time, caller_digits);
+  if (r.contact_time) c.contact_time = narrow<Real>(*r.contact_time, caller_digits);
+  else c.contact_time = std::nullopt;
   c.max_compression = narrow<Real>(r.max_compression, caller_digits);
   c.e_text = to_decimal_string(r.e), c.one_minus_e_text = to_decimal_string(r.one_minus_e);
-  c.contact_time_text = to_decimal_string(r.contact_time);
+  c.contact_time_text = to_decimal_string(or_nan(r.contact_time));
   c.error_estimate = narrow<Real>(r.error_estimate, caller_digits);
   c.steps = r.steps;
   c.seconds = seconds;
@@ -201,7 +206,7 @@ certified_computation<Real> record(certified_source source, int digits, const im
   c.outcome = r.outcome;
   c.e = r.e, c.one_minus_e = r.one_minus_e, c.contact_time = r.contact_time, c.max_compression = r.max_compression;
   c.e_text = to_decimal_string(r.e), c.one_minus_e_text = to_decimal_string(r.one_minus_e);
-  c.contact_time_text = to_decimal_string(r.contact_time);
+  c.contact_time_text = to_decimal_string(or_nan(r.contact_time));
   c.error_estimate = r.error_estimate;
   c.steps = r.steps;
   c.seconds = seconds;
@@ -226,13 +231,14 @@ template <class Ref, class Real>
 void compare_with_reference(const impact_result<Ref>& x, const impact_result<Ref>& ref, int working,
                             certified_computation<Real>& c) {
   const Ref one = 1;
-  c.digits_e = agreement_digits(x.e, ref.e, ref.e, working);
-  c.absolute_digits_e = agreement_digits(x.e, ref.e, one, working);
-  c.digits_one_minus_e = agreement_digits(x.one_minus_e, ref.one_minus_e, ref.one_minus_e, working);
-  c.digits_contact_time = agreement_digits(x.contact_time, ref.contact_time, ref.contact_time, working);
-  c.digits_max_compression = agreement_digits(x.max_compression, ref.max_compression, ref.max_compression, working);
+  c.certified_digits_e = agreement_digits(x.e, ref.e, ref.e, working);
+  c.certified_absolute_digits_e = agreement_digits(x.e, ref.e, one, working);
+  c.certified_digits_one_minus_e = agreement_digits(x.one_minus_e, ref.one_minus_e, ref.one_minus_e, working);
+  const Ref x_time = or_nan(x.contact_time), ref_time = or_nan(ref.contact_time);
+  c.certified_digits_contact_time = agreement_digits(x_time, ref_time, ref_time, working);
+  c.certified_digits_max_compression = agreement_digits(x.max_compression, ref.max_compression, ref.max_compression, working);
   if (ref.outcome == impact_outcome::stick && x.outcome == impact_outcome::stick)
-    c.digits_e = c.digits_one_minus_e = c.absolute_digits_e = working;
+    c.certified_digits_e = c.certified_digits_one_minus_e = c.certified_absolute_digits_e = working;
 }
 
 /// A working-precision result exactly in Ref.
@@ -241,7 +247,9 @@ impact_result<Ref> widened(const impact_result<Real>& r) {
   impact_result<Ref> w;
   w.outcome = r.outcome;
   w.e = widen<Ref>(r.e), w.one_minus_e = widen<Ref>(r.one_minus_e);
-  w.contact_time = widen<Ref>(r.contact_time), w.max_compression = widen<Ref>(r.max_compression);
+  if (r.contact_time) w.contact_time = widen<Ref>(*r.contact_time);
+  else w.contact_time = std::nullopt;
+  w.max_compression = widen<Ref>(r.max_compression);
   return w;
 }
 
@@ -266,8 +274,8 @@ void certify_against_reference(const contact_law& law, const Real& gamma, const 
       seconds);
   certified_computation<Real> entry =
       record_narrowed<Real>(certified_source::taylor_reference, reference, ref, seconds, caller_digits);
-  entry.digits_e = entry.digits_one_minus_e = entry.digits_contact_time = reference;
-  entry.digits_max_compression = entry.absolute_digits_e = reference;
+  entry.certified_digits_e = entry.certified_digits_one_minus_e = entry.certified_digits_contact_time = reference;
+  entry.certified_digits_max_compression = entry.certified_absolute_digits_e = reference;
   out.computations.insert(out.computations.begin() + 1, entry);
   out.outcome = ref.outcome;
   out.e = entry.e, out.one_minus_e = entry.one_minus_e;
@@ -292,28 +300,23 @@ void certify_against_reference(const contact_law& law, const Real& gamma, const 
   // Certified: the least agreement of the Taylor run and of the independent check.
   const certified_computation<Real>& t = out.computations[0];
   const certified_computation<Real>& i = out.computations.back();
-  out.digits_e = std::min(t.digits_e, i.digits_e);
-  out.digits_one_minus_e = std::min(t.digits_one_minus_e, i.digits_one_minus_e);
-  out.digits_contact_time = std::min(t.digits_contact_time, i.digits_contact_time);
-  out.digits_max_compression = std::min(t.digits_max_compression, i.digits_max_compression);
-  out.absolute_digits_e = std::min(t.absolute_digits_e, i.absolute_digits_e);
+  out.certified_digits_e = std::min(t.certified_digits_e, i.certified_digits_e);
+  out.certified_digits_one_minus_e = std::min(t.certified_digits_one_minus_e, i.certified_digits_one_minus_e);
+  out.certified_digits_contact_time = std::min(t.certified_digits_contact_time, i.certified_digits_contact_time);
+  out.certified_digits_max_compression = std::min(t.certified_digits_max_compression, i.certified_digits_max_compression);
+  out.certified_absolute_digits_e = std::min(t.certified_absolute_digits_e, i.certified_absolute_digits_e);
   const int agreement =
-      std::min({out.digits_e, out.digits_one_minus_e, out.digits_contact_time, out.digits_max_compression});
+      std::min({out.certified_digits_e, out.certified_digits_one_minus_e, out.certified_digits_contact_time,
+                out.certified_digits_max_compression});
   out.certified_digits = std::max(0, agreement - options.safety_margin);
-  out.absolute_digits_e = std::max(0, out.absolute_digits_e - options.safety_margin);
+  out.certified_absolute_digits_e = std::max(0, out.certified_absolute_digits_e - options.safety_margin);
   out.near_sticking = !out.outcome_certified || (ref.outcome == impact_outcome::rebound && ref.e < Ref(1) / 1000);
-  if (!out.outcome_certified) out.certified_digits = 0, out.absolute_digits_e = 0;
+  if (!out.outcome_certified) out.certified_digits = 0, out.certified_absolute_digits_e = 0;
 }
 
 }  // namespace detail
 
 namespace detail {
-
-// An optional quantity of a closed form, NaN when absent (agreement_digits gives 0 for NaN).
-template <class Real>
-Real or_nan(const std::optional<Real>& x) {
-  return x ? *x : std::numeric_limits<Real>::quiet_NaN();
-}
 
 // The closed-form path (header comment): x is the linear law's closed form at the
 // working precision; the reference evaluation and every comparison run in Ref.
@@ -336,13 +339,14 @@ void certify_closed_form_against_reference(const Real& gamma, const Real& g, con
   entry.outcome = ref.outcome;
   entry.e = narrow<Real>(ref.e, caller_digits);
   entry.one_minus_e = narrow<Real>(ref.one_minus_e, caller_digits);
-  entry.contact_time = narrow<Real>(ref_time, caller_digits);
+  if (ref.contact_time) entry.contact_time = narrow<Real>(*ref.contact_time, caller_digits);
+  else entry.contact_time = std::nullopt;
   entry.max_compression = narrow<Real>(ref_u_max, caller_digits);
   entry.e_text = to_decimal_string(ref.e), entry.one_minus_e_text = to_decimal_string(ref.one_minus_e);
   entry.contact_time_text = to_decimal_string(ref_time);
   entry.seconds = seconds;
-  entry.digits_e = entry.digits_one_minus_e = entry.digits_contact_time = reference;
-  entry.digits_max_compression = entry.absolute_digits_e = reference;
+  entry.certified_digits_e = entry.certified_digits_one_minus_e = entry.certified_digits_contact_time = reference;
+  entry.certified_digits_max_compression = entry.certified_absolute_digits_e = reference;
   out.computations.push_back(entry);
 
   out.outcome = ref.outcome;
@@ -352,21 +356,23 @@ void certify_closed_form_against_reference(const Real& gamma, const Real& g, con
 
   certified_computation<Real>& c = out.computations.front();
   const Ref one = 1;
-  c.digits_e = agreement_digits(widen<Ref>(x.e), ref.e, ref.e, working);
-  c.absolute_digits_e = agreement_digits(widen<Ref>(x.e), ref.e, one, working);
-  c.digits_one_minus_e = agreement_digits(widen<Ref>(x.one_minus_e), ref.one_minus_e, ref.one_minus_e, working);
-  c.digits_contact_time = agreement_digits(widen<Ref>(or_nan(x.contact_time)), ref_time, ref_time, working);
-  c.digits_max_compression = agreement_digits(widen<Ref>(or_nan(x.max_compression)), ref_u_max, ref_u_max, working);
+  c.certified_digits_e = agreement_digits(widen<Ref>(x.e), ref.e, ref.e, working);
+  c.certified_absolute_digits_e = agreement_digits(widen<Ref>(x.e), ref.e, one, working);
+  c.certified_digits_one_minus_e = agreement_digits(widen<Ref>(x.one_minus_e), ref.one_minus_e, ref.one_minus_e, working);
+  c.certified_digits_contact_time = agreement_digits(widen<Ref>(or_nan(x.contact_time)), ref_time, ref_time, working);
+  c.certified_digits_max_compression = agreement_digits(widen<Ref>(or_nan(x.max_compression)), ref_u_max, ref_u_max, working);
   if (x.outcome == impact_outcome::stick && ref.outcome == impact_outcome::stick)
-    c.digits_e = c.digits_one_minus_e = c.absolute_digits_e = working;  // e = 0, 1 - e = 1 exactly
-  out.digits_e = c.digits_e, out.digits_one_minus_e = c.digits_one_minus_e;
-  out.digits_contact_time = c.digits_contact_time, out.digits_max_compression = c.digits_max_compression;
+    c.certified_digits_e = c.certified_digits_one_minus_e = c.certified_absolute_digits_e = working;  // e = 0, 1 - e = 1 exactly
+  out.certified_digits_e = c.certified_digits_e, out.certified_digits_one_minus_e = c.certified_digits_one_minus_e;
+  out.certified_digits_contact_time = c.certified_digits_contact_time;
+  out.certified_digits_max_compression = c.certified_digits_max_compression;
   const int agreement =
-      std::min({out.digits_e, out.digits_one_minus_e, out.digits_contact_time, out.digits_max_compression});
+      std::min({out.certified_digits_e, out.certified_digits_one_minus_e, out.certified_digits_contact_time,
+                out.certified_digits_max_compression});
   out.certified_digits = std::max(0, agreement - options.safety_margin);
-  out.absolute_digits_e = std::max(0, c.absolute_digits_e - options.safety_margin);
+  out.certified_absolute_digits_e = std::max(0, c.certified_absolute_digits_e - options.safety_margin);
   out.near_sticking = !out.outcome_certified || (ref.outcome == impact_outcome::rebound && ref.e < Ref(1) / 1000);
-  if (!out.outcome_certified) out.certified_digits = 0, out.absolute_digits_e = 0;
+  if (!out.outcome_certified) out.certified_digits = 0, out.certified_absolute_digits_e = 0;
 }
 
 // Runs f.template operator()<Ref>(reference digits) in certify's reference type for
@@ -427,9 +433,9 @@ certified_result<Real> certify_perturbed(const contact_law& law, const Real& gam
     c.precision_digits = working;
     c.outcome = x.outcome;
     c.e = x.e, c.one_minus_e = x.one_minus_e;
-    c.contact_time = or_nan(x.contact_time), c.max_compression = or_nan(x.max_compression);
+    c.contact_time = x.contact_time, c.max_compression = or_nan(x.max_compression);
     c.e_text = to_decimal_string(x.e), c.one_minus_e_text = to_decimal_string(x.one_minus_e);
-    c.contact_time_text = to_decimal_string(c.contact_time);
+    c.contact_time_text = to_decimal_string(or_nan(x.contact_time));
     c.seconds = seconds;
     out.computations.push_back(c);
     in_reference_type<Real>(options, reference, working, [&]<class Ref>(int digits) {

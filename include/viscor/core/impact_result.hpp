@@ -4,6 +4,8 @@
 #include <viscor/core/outcome.hpp>
 
 #include <cstddef>
+#include <limits>
+#include <optional>
 #include <string>
 
 namespace viscor {
@@ -35,9 +37,10 @@ struct impact_result {
   impact_outcome outcome = impact_outcome::rebound;
   /// T_f for a rebound; for a stick, the time u' vanishes again with u > 0 (the
   /// bead stops separating), +infinity if it creeps to rest without turning back;
-  /// NaN (unknown) when undecided, or for a stick whose turn back is below the
-  /// precision (the adaptive method, energy proven negative).
-  Real contact_time = 0;
+  /// empty (unknown) when undecided, or for a stick whose turn back is below the
+  /// precision (the adaptive method, energy proven negative). std::optional, as in
+  /// every result that may not know it (exact_result, table_row, evaluation).
+  std::optional<Real> contact_time = Real(0);
   Real max_compression = 0;          ///< u_max
   /// For a stick, the overlap where the bead stops separating: u at contact_time,
   /// where u' returns to 0; when it creeps to rest instead (contact_time =
@@ -52,5 +55,17 @@ struct impact_result {
   Real error_estimate = 0;  ///< estimated absolute error of e
   integration_method method = integration_method::taylor;
 };
+
+namespace detail {
+
+/// An optional quantity (a contact time, a closed form's u_max) as a number, NaN when
+/// unknown: for comparisons (agreement_digits gives 0 for NaN) and for the "nan" that
+/// JSON and reports print for it.
+template <class Real>
+Real or_nan(const std::optional<Real>& x) {
+  return x ? *x : std::numeric_limits<Real>::quiet_NaN();
+}
+
+}  // namespace detail
 
 }  // namespace viscor

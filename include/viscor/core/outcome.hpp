@@ -11,7 +11,7 @@ namespace viscor {
 /// end-of-contact criterion it uses: viscor ends contact at zero overlap u = 0, as the
 /// report does. undecided: the method cannot tell at its working precision (or within
 /// its step budget) whether or when the contact ends: a solver's e is 0 to within the
-/// result's error_estimate and its contact_time is NaN; a proof claims nothing.
+/// result's error_estimate and its contact_time is unknown (empty); a proof claims nothing.
 /// Never certified: certify counts it as a disagreement.
 enum class impact_outcome { rebound, stick, undecided };
 

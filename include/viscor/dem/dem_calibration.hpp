@@ -123,7 +123,7 @@ calibration_result<Real> calibrate_clamped_gamma(const contact_law& law, const R
     throw unreachable_target("target_e = " + to_decimal_string(target_e) +
                              " is unreachable with the clamped force at this load: the bead sticks first");
   using std::abs;
-  r.e_error = abs(r.e - target_e);
+  r.target_bound = abs(r.e - target_e);
   return r;
 }
 

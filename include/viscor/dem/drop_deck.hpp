@@ -26,6 +26,8 @@
 #include <viscor/dem/deck_snippet.hpp>
 
 #include <cmath>
+#include <limits>
+#include <optional>
 #include <string>
 
 namespace viscor::dem {
@@ -58,7 +60,10 @@ template <class Real>
 drop_timing<Real> drop_timing_for(const dem_model& model, const dem_impact<Real>& impact, const dem_deck<Real>& d) {
   drop_timing<Real> t;
   t.time_scale = d.calibration.time_scale;
-  t.contact_time = e_for_deck(model, impact, d.damping).contact_time * t.time_scale;
+  // NOTE: a deck calibrated to a target e > 0 rebounds, so the time is known; were it
+  // not, the deck's comment and the JSON would print nan.
+  const std::optional<Real> scaled = e_for_deck(model, impact, d.damping).contact_time;
+  t.contact_time = scaled ? Real(*scaled * t.time_scale) : std::numeric_limits<Real>::quiet_NaN();
   t.steps_per_time_scale = drop_steps_per_time_scale_of(model);
   t.time_step = t.time_scale / t.steps_per_time_scale;
   return t;

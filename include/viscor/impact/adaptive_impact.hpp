@@ -36,7 +36,7 @@
 // e^2/2 at u = 0, so E < 0 proves sticking and sqrt(2E) bounds e; creeping into
 // the equilibrium u* = g^(1/alpha) (g > 0, a trapping sector) or into u = 0
 // (g = 0, a barrier) without turning back gives contact_time = +inf.
-// Undecided (impact_outcome::undecided, contact_time NaN): what the solver cannot
+// Undecided (impact_outcome::undecided, contact_time unknown): what the solver cannot
 // prove at its working precision: g = 0 with e <= sqrt(2E) below the tolerance but
 // no barrier, or a state at rest to half the precision without a trapping sector
 // or an energy proven negative (a turn back, if any, is below the precision); or a
@@ -279,7 +279,7 @@ class adaptive_impact_solver {
   enum class turn_outcome {
     turns_back,  ///< v = 0 again with u > 0 after maximal compression: the bead sticks at that time
     creeps,      ///< the bead creeps to rest without turning back: it sticks, contact_time = +inf
-    sticks_at_unknown_time,  ///< at rest with the energy proven negative: it sticks, contact_time NaN
+    sticks_at_unknown_time,  ///< at rest with the energy proven negative: it sticks, contact_time unknown
     undecided,   ///< at rest, or e below the tolerance, without a proof of how the contact ends
     leaves,      ///< nearing u = 0 on the way out: the exit takes over
   };
@@ -295,7 +295,7 @@ class adaptive_impact_solver {
     turn_outcome outcome = turn_outcome::leaves;
     tau_point<W> at;  ///< where the turn phase stopped (leaves: where the exit starts)
     compression_record compression;
-    W contact_time = 0;  ///< turns_back: the time v = 0 again; creeps: +inf; undecided: NaN
+    std::optional<W> contact_time = W(0);  ///< turns_back: the time v = 0 again; creeps: +inf; undecided: empty
     W error = 0;         ///< undecided with g = 0: the energy bound sqrt(2|E|) on e
   };
 
@@ -333,7 +333,8 @@ class adaptive_impact_solver {
   }
 
   struct raw_result {
-    W e = 0, reduced_D = 0, contact_time = 0, max_compression = 0, time_of_max = 0, error = 0;
+    W e = 0, reduced_D = 0, max_compression = 0, time_of_max = 0, error = 0;
+    std::optional<W> contact_time = W(0);  ///< empty: unknown
     impact_outcome outcome = impact_outcome::rebound;
     std::size_t steps = 0;
   };
@@ -366,7 +367,7 @@ class adaptive_impact_solver {
       const exit_end x = exit_phase(t.at);
       if (x.outcome == exit_outcome::undecided) {
         r.outcome = impact_outcome::undecided;
-        r.contact_time = std::numeric_limits<W>::quiet_NaN(), r.error = x.error, r.steps = m_steps;
+        r.contact_time = std::nullopt, r.error = x.error, r.steps = m_steps;
         return r;
       }
       if (x.outcome == exit_outcome::done) {
@@ -449,7 +450,7 @@ class adaptive_impact_solver {
       if (*scan == turn_scan::not_located) {
         // The bead turned back within the step (v > 0 at its accurate end after
         // maximal compression), but the turn could not be told from maximal compression.
-        out.outcome = turn_outcome::undecided, out.contact_time = std::numeric_limits<W>::quiet_NaN();
+        out.outcome = turn_outcome::undecided, out.contact_time = std::nullopt;
         break;
       }
       typename regularised_law<W>::powers p;
@@ -501,7 +502,7 @@ class adaptive_impact_solver {
     const bool trapped = rest == rest_verdict::trapped;
     compression.overlap = pow(m_law.g, 1 / m_law.alpha), compression.time = trapped ? inf : nan;
     out.outcome = trapped ? turn_outcome::creeps : turn_outcome::undecided;
-    out.contact_time = trapped ? inf : nan;
+    out.contact_time = trapped ? std::optional<W>(inf) : std::nullopt;
     return true;
   }
 
@@ -512,7 +513,7 @@ class adaptive_impact_solver {
                               const W& h, compression_record& compression, turn_end& out) {
     using std::abs;
     using std::sqrt;
-    const W inf = std::numeric_limits<W>::infinity(), nan = std::numeric_limits<W>::quiet_NaN();
+    const W inf = std::numeric_limits<W>::infinity();
     if (m_law.g == 0 && creeps_to_origin(at.z[in_tau::s], at.z[in_tau::w])) {
       out.outcome = turn_outcome::creeps, out.contact_time = inf;
       return true;
@@ -534,7 +535,7 @@ class adaptive_impact_solver {
         out.outcome = turn_outcome::leaves;
         return true;
       }
-      out.outcome = turn_outcome::undecided, out.contact_time = nan, out.error = energy_bound_on_e(v, p);
+      out.outcome = turn_outcome::undecided, out.contact_time = std::nullopt, out.error = energy_bound_on_e(v, p);
       return true;
     }
     const W energy = m_law.energy(v, p);
@@ -545,7 +546,7 @@ class adaptive_impact_solver {
       // above) is beyond the precision.
       if (m_law.g == 0 || energy < 0) compression.energy_stuck = true;
       if (m_law.g == 0) {
-        out.outcome = turn_outcome::undecided, out.contact_time = nan, out.error = sqrt(2 * abs(energy));
+        out.outcome = turn_outcome::undecided, out.contact_time = std::nullopt, out.error = sqrt(2 * abs(energy));
         return true;
       }
     }
@@ -555,13 +556,13 @@ class adaptive_impact_solver {
         // NOTE: E never increases and is v^2/2 >= 0 at u = 0, so E < 0 beyond its
         // error proves the stick even where the settling is not trapped (nearly
         // critically damped: Hunt-Crossley, gamma = 0.0063, g = 426). When it turns
-        // back (the contact time) is below the precision: NaN, not +inf (linear law,
+        // back (the contact time) is below the precision: unknown, not +inf (linear law,
         // gamma = 1.9999, g = 0.5 turns back at tau = 316).
         const bool trapped = rest == rest_verdict::trapped;
         out.outcome = trapped                                  ? turn_outcome::creeps
                       : energy_proven_negative(energy, v, p) ? turn_outcome::sticks_at_unknown_time
                                                                : turn_outcome::undecided;
-        out.contact_time = trapped ? inf : nan;
+        out.contact_time = trapped ? std::optional<W>(inf) : std::nullopt;
         return true;
       }
     }
@@ -1268,12 +1269,13 @@ impact_result<Real> solve_impact_adaptive_in(const contact_law& law, const Real&
   r.method = integration_method::adaptive;
   r.outcome = raw.outcome;
   r.steps = raw.steps;
-  r.contact_time = narrow<Real>(raw.contact_time, caller_digits);
+  if (raw.contact_time) r.contact_time = narrow<Real>(*raw.contact_time, caller_digits);
+  else r.contact_time = std::nullopt;
   r.max_compression = narrow<Real>(raw.max_compression, caller_digits);
   r.time_of_max_compression = narrow<Real>(raw.time_of_max, caller_digits);
   W err = solver.accumulated_error() + raw.error + tol.eps_e;
   if (raw.outcome != impact_outcome::rebound) {
-    // stick: e = 0; undecided: e = 0 to within error_estimate, contact_time NaN.
+    // stick: e = 0; undecided: e = 0 to within error_estimate, contact_time unknown.
     r.e = 0, r.one_minus_e = 1, r.energy_residual = 0;
   } else {
     const W beta = law.beta.template value<W>();

@@ -28,7 +28,7 @@ impact_result<Real> undecided_unless_energy_allows(impact_result<Real> r) {
   r.outcome = impact_outcome::undecided;
   r.error_estimate = r.e;  // all that is known: 0 <= e <= 1
   r.e = 0, r.one_minus_e = 1, r.energy_residual = 0;
-  r.contact_time = std::numeric_limits<Real>::quiet_NaN();
+  r.contact_time = std::nullopt;
   return r;
 }
 

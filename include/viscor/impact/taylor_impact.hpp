@@ -50,7 +50,7 @@
 // * at_rest, g > 0: the state equals u_eq up to rounding: the turn, if any, is
 //   below the working precision.
 // The two creeps end the turn as creeps, contact_time = +infinity (proven: the bead
-// never turns); at_rest as sticks_at_unknown_time, contact_time NaN (the bead may
+// never turns); at_rest as sticks_at_unknown_time, contact_time unknown (the bead may
 // still turn back, later than the precision can follow: linear law, gamma = 1.9999,
 // g = 0.5 turns at tau = 316). stop_overlap is the turning point u_s, or the rest
 // position u_eq (0 for g = 0).
@@ -136,7 +136,7 @@ class taylor_impact_solver {
     spirals,     ///< g = 0, alpha + 1 = 2 beta, underdamped, past maximal compression: the spiral phase follows
     turns_back,  ///< v = 0 again with u > 0: the bead sticks at the turning point
     creeps,      ///< a barrier or a trapping sector holds: the bead sticks, contact_time = +infinity
-    sticks_at_unknown_time,  ///< at rest at u_eq up to rounding: it sticks, contact_time NaN
+    sticks_at_unknown_time,  ///< at rest at u_eq up to rounding: it sticks, contact_time unknown (empty)
     undamped,    ///< gamma = 0: time-reversible, e = 1 exactly
     undecided,   ///< creeping out on the slow manifold, out of reach of explicit steps, g > 0 or the creep failed
   };
@@ -226,7 +226,7 @@ class taylor_impact_solver {
         // and e = 1 exactly, however ill-conditioned the way back is (g = 1e12).
         result.outcome = impact_outcome::rebound;
         result.e = 1, result.one_minus_e = 0, result.energy_residual = 0;
-        result.contact_time = 2 * around.tau_max;
+        result.contact_time = Real(2 * around.tau_max);
         result.error_estimate = 0;
         return;
       case turn_outcome::turns_back:
@@ -237,12 +237,12 @@ class taylor_impact_solver {
         return;
       case turn_outcome::sticks_at_unknown_time:
         // NOTE: at rest after maximal compression the energy check of a turn applies: E = P(u_eq) < 0.
-        stick(result, around.at, std::numeric_limits<Real>::quiet_NaN(), m_u_eq, around.past_max_compression);
+        stick(result, around.at, std::nullopt, m_u_eq, around.past_max_compression);
         return;
       case turn_outcome::undecided:
         result.outcome = impact_outcome::undecided;
         result.e = 0, result.one_minus_e = 1, result.energy_residual = 0;
-        result.contact_time = std::numeric_limits<Real>::quiet_NaN();
+        result.contact_time = std::nullopt;
         result.error_estimate = energy_bound_on_e(around.at);
         return;
       case turn_outcome::leaves:
@@ -889,8 +889,8 @@ class taylor_impact_solver {
   // stop overlap given. With check_energy (it turned at u_s > 0, 2E = 2P(u_s),
   // P(u) = u^(alpha+1)/(alpha+1) - g u) the energy identity must hold to within a
   // quarter of |P(u_s)|: reaching u = 0 instead would need an error that large.
-  void stick(impact_result<Real>& result, const state& at, const Real& contact_time, const Real& stop_overlap,
-             bool check_energy) const {
+  void stick(impact_result<Real>& result, const state& at, const std::optional<Real>& contact_time,
+             const Real& stop_overlap, bool check_energy) const {
     using std::abs;
     using std::pow;
     result.outcome = impact_outcome::stick;

@@ -54,7 +54,7 @@ inline command_output calibrate_by_surrogate(const calibrate_request& q, bool is
   j["command"] = "calibrate";
   j[field::method] = "surrogate";
   j["law"] = law_json(q.law);
-  j["target_e"] = *q.target_e;
+  j[field::target_e] = *q.target_e;
   if (is_physical) {
     const physical_parameters<double> in = q.physical.parameters<double>(q.law);
     physical_parameters<double> p = in;
@@ -110,7 +110,7 @@ inline command_output calibrate_by_solving(const calibrate_request& q, bool is_p
     json& j = out.object;
     j["command"] = "calibrate";
     j["law"] = law_json(q.law);
-    j["target_e"] = *q.target_e;
+    j[field::target_e] = *q.target_e;
     std::ostringstream text;
     text << "law        " << q.law.describe() << "\n"
          << "target e   " << *q.target_e << "\n";
@@ -134,16 +134,16 @@ inline command_output calibrate_by_solving(const calibrate_request& q, bool is_p
     j["gamma"] = number(r.gamma);
     j["g"] = number(r.g);
     j[field::e] = number(r.e);
-    j["e_error"] = number(r.e_error);
-    j["gamma_lo"] = number(r.gamma_lo);
-    j["gamma_hi"] = number(r.gamma_hi);
-    j["solves"] = r.solves;
+    j[field::target_bound] = number(r.target_bound);
+    j[field::gamma_lo] = number(r.gamma_lo);
+    j[field::gamma_hi] = number(r.gamma_hi);
+    j[field::solves] = r.solves;
     j["precision"] = scalar_json<Real>();
     j[field::seconds] = seconds;
     text << "gamma      " << number(r.gamma) << " (scaled)\n"
          << "g          " << number(r.g) << " (scaled load)\n"
          << "e          " << number(r.e) << " at gamma (solve_impact)\n"
-         << "|e - tgt|  <= " << to_decimal_string(r.e_error, 3) << " (miss plus 10 x the solver's estimate)\n"
+         << "|e - tgt|  <= " << to_decimal_string(r.target_bound, 3) << " (miss plus 10 x the solver's estimate)\n"
          << "solves     " << r.solves << "\n"
          << "seconds    " << seconds << " s\n"
          << "digits     " << decimal_digits<Real>() << " (working precision)\n";

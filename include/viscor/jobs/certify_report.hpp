@@ -36,27 +36,27 @@ void certify_and_report(const contact_law& law, const Real& gamma, const Real& g
   const bool stick = c.outcome == impact_outcome::stick;
   json out;
   out[field::outcome] = std::string(to_string(c.outcome));
-  out["outcome_certified"] = c.outcome_certified;
+  out[field::outcome_certified] = c.outcome_certified;
   out[field::certified_digits] = c.certified_digits;
   out[field::certified_digits_column] = c.certified_digits;  // the older name, still written
   out[field::e] = stick && c.outcome_certified ? std::string("0") : rounded_to_certified(c.e, c.certified_digits);
   out[field::one_minus_e] =
       stick && c.outcome_certified ? std::string("1") : rounded_to_certified(c.one_minus_e, c.certified_digits);
-  out[field::contact_time] = rounded_to_certified(c.contact_time, c.certified_digits);
+  out[field::contact_time] = rounded_to_certified(viscor::detail::or_nan(c.contact_time), c.certified_digits);  // unknown: nan
   out[field::max_compression] = rounded_to_certified(c.max_compression, c.certified_digits);
-  out["digits_e"] = c.digits_e;
-  out["digits_one_minus_e"] = c.digits_one_minus_e;
-  out["digits_contact_time"] = c.digits_contact_time;
-  out["digits_max_compression"] = c.digits_max_compression;
-  out["absolute_digits_e"] = c.absolute_digits_e;
-  out["near_sticking"] = c.near_sticking;
+  out[field::certified_digits_e] = c.certified_digits_e;
+  out[field::certified_digits_one_minus_e] = c.certified_digits_one_minus_e;
+  out[field::certified_digits_contact_time] = c.certified_digits_contact_time;
+  out[field::certified_digits_max_compression] = c.certified_digits_max_compression;
+  out[field::certified_absolute_digits_e] = c.certified_absolute_digits_e;
+  out[field::near_sticking] = c.near_sticking;
   out[field::working_digits] = c.working_digits;
-  out["safety_margin"] = c.safety_margin;
+  out[field::safety_margin] = c.safety_margin;
   json list = json::array();
   for (const auto& m : c.computations) {
     json k;
-    k["source"] = std::string(to_string(m.source));
-    k["precision_digits"] = m.precision_digits;
+    k[field::source] = std::string(to_string(m.source));
+    k[field::precision_digits] = m.precision_digits;
     k[field::outcome] = std::string(to_string(m.outcome));
     k[field::e] = m.e_text;
     k[field::one_minus_e] = m.one_minus_e_text;
@@ -65,14 +65,14 @@ void certify_and_report(const contact_law& law, const Real& gamma, const Real& g
     k[field::error_estimate] = to_decimal_string(m.error_estimate, 3);
     k[field::steps] = m.steps;
     k[field::seconds] = m.seconds;
-    k["digits_e"] = m.digits_e;
-    k["digits_one_minus_e"] = m.digits_one_minus_e;
-    k["digits_contact_time"] = m.digits_contact_time;
-    k["absolute_digits_e"] = m.absolute_digits_e;
+    k[field::certified_digits_e] = m.certified_digits_e;
+    k[field::certified_digits_one_minus_e] = m.certified_digits_one_minus_e;
+    k[field::certified_digits_contact_time] = m.certified_digits_contact_time;
+    k[field::certified_absolute_digits_e] = m.certified_absolute_digits_e;
     list.push_back(k);
   }
-  out["computations"] = list;
-  j["certified"] = out;
+  out[field::computations] = list;
+  j[field::certified] = out;
 
   text << "certified  " << (c.outcome_certified ? "" : "NO: the computations disagree on the outcome; ")
        << c.certified_digits << " significant digits (agreement of " << c.computations.size() << " computations minus a margin of "
@@ -83,13 +83,13 @@ void certify_and_report(const contact_law& law, const Real& gamma, const Real& g
        << (stick ? "  T_stop   " : "  T_f      ") << out[field::contact_time].get<std::string>() << "\n"
        << "  u_max    " << out[field::max_compression].get<std::string>() << "\n";
   if (c.near_sticking)
-    text << "  near the sticking threshold: e is certified to " << c.absolute_digits_e << " decimal places (absolute)\n";
+    text << "  near the sticking threshold: e is certified to " << c.certified_absolute_digits_e << " decimal places (absolute)\n";
   for (const auto& m : c.computations) {
     text << "  " << to_string(m.source) << " at " << m.precision_digits << " digits: " << to_string(m.outcome)
          << ", e = " << m.e_text << "\n"
          << "      1 - e = " << m.one_minus_e_text << ", T = " << m.contact_time_text << "\n"
-         << "      agrees with the reference to " << m.digits_e << " digits (e), " << m.digits_one_minus_e
-         << " (1 - e), " << m.digits_contact_time << " (T); " << m.steps << " steps, " << m.seconds << " s\n";
+         << "      agrees with the reference to " << m.certified_digits_e << " digits (e), " << m.certified_digits_one_minus_e
+         << " (1 - e), " << m.certified_digits_contact_time << " (T); " << m.steps << " steps, " << m.seconds << " s\n";
   }
 }
 

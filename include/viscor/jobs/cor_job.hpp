@@ -53,9 +53,9 @@ void add_result_json(json& j, const impact_result<Real>& r, double seconds) {
   j[field::outcome] = std::string(to_string(r.outcome));
   j[field::contact_time] = number(r.contact_time);
   j[field::max_compression] = number(r.max_compression);
-  if (r.outcome == impact_outcome::stick) j["stop_overlap"] = number(r.stop_overlap);
-  j["time_of_max_compression"] = number(r.time_of_max_compression);
-  j["energy_residual"] = number(r.energy_residual);
+  if (r.outcome == impact_outcome::stick) j[field::stop_overlap] = number(r.stop_overlap);
+  j[field::time_of_max_compression] = number(r.time_of_max_compression);
+  j[field::energy_residual] = number(r.energy_residual);
   j[field::error_estimate] = number(r.error_estimate);
   j[field::steps] = r.steps;
   j[field::seconds] = seconds;
@@ -110,6 +110,13 @@ inline void check_provable(const contact_law& law, bool is_physical) {
 #endif
 }
 
+// A scaled contact time in seconds (time_scale T); unknown stays unknown.
+template <class Real>
+std::optional<Real> in_seconds(const std::optional<Real>& contact_time, const Real& time_scale) {
+  if (!contact_time) return std::nullopt;
+  return Real(*contact_time * time_scale);
+}
+
 // The readable summary of one solved impact (after the law and the physical inputs).
 template <class Real>
 void describe_impact(std::ostringstream& text, const impact_result<Real>& r, const Real& gamma, const Real& g,
@@ -125,7 +132,7 @@ void describe_impact(std::ostringstream& text, const impact_result<Real>& r, con
        << (r.outcome == impact_outcome::rebound ? "T_f        " : "T_stop     ")
        << (r.outcome == impact_outcome::undecided ? std::string("unknown") : number(r.contact_time)) << " (scaled)\n";
   if (scales && r.outcome != impact_outcome::undecided)
-    text << "time       " << number(Real(r.contact_time * scales->time_scale)) << " s (contact)\n";
+    text << "time       " << number(in_seconds(r.contact_time, scales->time_scale)) << " s (contact)\n";
   text << "u_max      " << number(r.max_compression) << " at tau = " << number(r.time_of_max_compression) << "\n"
        << (r.outcome == impact_outcome::stick
                ? "u_stop     " + number(r.stop_overlap) + " (where u' returns to 0, or the rest position)\n"
@@ -195,8 +202,8 @@ inline command_output run_cor(cor_request q) {
     j["precision"] = scalar_json<Real>();
     add_result_json(j, r, seconds);
     if (scales) {
-      j[field::contact_time_s] = number(Real(r.contact_time * scales->time_scale));
-      j["max_compression_m"] = number(Real(r.max_compression * scales->length_scale));
+      j[field::contact_time_s] = number(detail::in_seconds(r.contact_time, scales->time_scale));
+      j[field::max_compression_m] = number(Real(r.max_compression * scales->length_scale));
     }
     detail::describe_impact(text, r, gamma_value, g_value, scales, seconds);
     if (q.certify) certify_and_report<Real>(q.law, gamma_value, g_value, text, j);

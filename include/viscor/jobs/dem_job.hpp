@@ -281,14 +281,14 @@ struct dem_job : dem_request {
     deck["damping"] = s.damping;
     deck["damping_kind"] = model.deck_kind == dem::deck_damping_kind::coefficient ? "coefficient"
                                                                                    : "coefficient_of_restitution";
-    j["target_e"] = target_e;
+    j[field::target_e] = target_e;
     j["deck"] = deck;
     j["damping_number"] = number(d.damping_number);
     j["gamma0"] = number(d.gamma0);
     j["gamma"] = number(d.calibration.scaled.gamma);
     j["g"] = number(d.calibration.scaled.g);
     j[field::e] = number(d.calibration.scaled.e);
-    j["e_error"] = number(d.calibration.scaled.e_error);
+    j[field::target_bound] = number(d.calibration.scaled.target_bound);
     j["time_scale_s"] = number(d.calibration.time_scale);
     text << "impact      e = " << target_e << " at v0 = " << v0 << " m/s, gravity = " << gravity
          << " m/s^2, force = " << force << " N\n"

@@ -55,7 +55,7 @@ inline command_output run_exact(const exact_request& q) {
     j[field::outcome] = std::string(to_string(r->outcome));
     if (r->contact_time) j[field::contact_time] = number(*r->contact_time);
     if (r->max_compression) j[field::max_compression] = number(*r->max_compression);
-    if (r->time_of_max_compression) j["time_of_max_compression"] = number(*r->time_of_max_compression);
+    if (r->time_of_max_compression) j[field::time_of_max_compression] = number(*r->time_of_max_compression);
     j[field::seconds] = seconds;
     text << "formula  " << r->formula << "\n"
          << "outcome  " << to_string(r->outcome) << " (contact ends at zero overlap u = 0)\n"

@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cstddef>
+#include <optional>
 #include <iostream>
 #include <string>
 
@@ -75,6 +76,13 @@ inline json read_json_file(const std::string& path) { return parse_json_text(rea
 template <class Real>
 std::string number(const Real& x) {
   return to_decimal_string(x);
+}
+
+/// An optional quantity (a contact time) as number() writes it, "nan" when unknown:
+/// the spelling docs/json-schema.md documents for an unknown contact time.
+template <class Real>
+std::string number(const std::optional<Real>& x) {
+  return x ? number(*x) : std::string("nan");
 }
 
 /// Law description for JSON.

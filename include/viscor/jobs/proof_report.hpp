@@ -19,17 +19,17 @@ namespace viscor::jobs {
 inline proofs::cor_enclosure add_proof(const contact_law& law, const std::string& gamma, const std::string& g,
                                        int digits, std::ostringstream& text, json& j) {
   const proofs::cor_enclosure p = viscor::enclose(law, gamma, g, digits);
-  j["outcome_proven"] = std::string(proofs::to_string(p.outcome));
-  j["proof"] = p.how;
+  j[field::outcome_proven] = std::string(proofs::to_string(p.outcome));
+  j[field::proof] = p.how;
   text << "proven     " << proofs::to_string(p.outcome) << " (" << p.how << ")\n";
   if (p.outcome == proofs::proven_outcome::undecided) {
     j[field::proven_digits] = 0;
     return p;
   }
-  const auto show = [&](const char* name, const char* label, const proofs::proven_bounds& b, bool main) {
+  const auto show = [&](const char* name, const char* label, const proofs::proven_bounds& b, const char* digits) {
     j[std::string(name) + "_lower"] = b.lower;
     j[std::string(name) + "_upper"] = b.upper;
-    j[main ? std::string(field::proven_digits) : "proven_digits_" + std::string(name)] = b.proven_digits;
+    j[digits] = b.proven_digits;
     if (b.lower == b.upper) {  // an exact value (e = 0 of a stick, 1 - e = 0 at gamma = 0)
       text << label << b.lower << " (exact)\n";
       return;
@@ -37,10 +37,10 @@ inline proofs::cor_enclosure add_proof(const contact_law& law, const std::string
     text << label << "[" << b.lower << ", " << b.upper << "]\n           " << b.proven_digits
          << " proven correctly rounded digits" << (b.proven_digits > 0 ? ": " + b.rounded : std::string()) << "\n";
   };
-  show(field::e, "e in       ", p.e, true);
-  show(field::one_minus_e, "1 - e in   ", p.one_minus_e, false);
-  if (p.contact_time) show(field::contact_time, "T_f in     ", *p.contact_time, false);
-  if (p.max_compression) show(field::max_compression, "u_max in   ", *p.max_compression, false);
+  show(field::e, "e in       ", p.e, field::proven_digits);
+  show(field::one_minus_e, "1 - e in   ", p.one_minus_e, field::proven_digits_one_minus_e);
+  if (p.contact_time) show(field::contact_time, "T_f in     ", *p.contact_time, field::proven_digits_contact_time);
+  if (p.max_compression) show(field::max_compression, "u_max in   ", *p.max_compression, field::proven_digits_max_compression);
   return p;
 }
 

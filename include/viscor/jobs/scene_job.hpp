@@ -185,7 +185,7 @@ inline scene_result run_scene_file(const scene_file& file, const std::string& pa
       summary << " (calibrated: e = " << *file.scene.measured_e << " at v0 = " << *file.scene.measured_speed
               << " m/s, gravity " << *file.scene.measured_gravity << " at " << s.calibration->working_digits
               << " digits: scaled gamma " << s.calibration->gamma << " at g " << s.calibration->g
-              << ", |e - measured| <= " << s.calibration->e_error << ")";
+              << ", |e - measured| <= " << s.calibration->target_bound << ")";
     summary << "\n"
             << "load       gravity = " << file.scene.gravity << " m/s^2, force = " << file.scene.force << " N\n"
             << "impacts    " << index << " at tolerance " << file.scene.tolerance
@@ -216,7 +216,7 @@ inline scene_result run_scene_file(const scene_file& file, const std::string& pa
         c["force"] = file.scene.measured_force ? *file.scene.measured_force : std::string("0");
         c["gamma0"] = s.calibration->gamma0;
         c["gamma"] = s.calibration->gamma, c["g"] = s.calibration->g;
-        c["e_error"] = s.calibration->e_error;
+        c[field::target_bound] = s.calibration->target_bound;
         c["precision"] = json{{"digits", s.calibration->working_digits}};
         j["calibration"] = c;
       }

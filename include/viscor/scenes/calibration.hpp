@@ -66,7 +66,7 @@ struct calibration_result {
   Real gamma = 0;    ///< the calibrated scaled damping
   Real g = 0;        ///< the scaled load it was calibrated at
   Real e = 1;        ///< e(gamma) by solve_impact
-  Real e_error = 0;  ///< |e - target_e| + 10 x estimate: bound on the miss of the target
+  Real target_bound = 0;  ///< |e - target_e| + 10 x estimate: a stated bound on the miss of the target
   Real gamma_lo = 0, gamma_hi = 0;  ///< final bracket: e(gamma_lo) >= target_e >= e(gamma_hi)
   int solves = 0;    ///< solve_impact calls
 };
@@ -126,7 +126,7 @@ calibration_result<Real> calibrate_gamma(const contact_law& law, const Real& g, 
     if (!have_best || bound < best_miss) {
       have_best = true;
       best_miss = bound;
-      r.gamma = gamma, r.e = s.e, r.e_error = bound;
+      r.gamma = gamma, r.e = s.e, r.target_bound = bound;
     }
     if (bound <= tol) done = true;
     return miss;

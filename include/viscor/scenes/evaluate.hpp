@@ -273,7 +273,7 @@ evaluation_text taylor_in(const contact_law& law, const Real& gamma, const Real&
   out.outcome = t.solve.outcome;
   out.e = to_decimal_string(t.solve.e), out.one_minus_e = to_decimal_string(t.solve.one_minus_e);
   out.bound = bound_text(t.bound);
-  out.contact_time = to_decimal_string(t.solve.contact_time);
+  if (t.solve.contact_time) out.contact_time = to_decimal_string(*t.solve.contact_time);
   out.working_digits = decimal_digits<W>();
   return out;
 }
@@ -290,7 +290,7 @@ evaluation_text certified_in(const contact_law& law, const Real& gamma, const Re
   out.outcome = c.outcome;
   out.working_digits = decimal_digits<W>();
   out.e = to_decimal_string(c.e), out.one_minus_e = to_decimal_string(c.one_minus_e);
-  out.contact_time = to_decimal_string(c.contact_time);
+  if (c.contact_time) out.contact_time = to_decimal_string(*c.contact_time);
   W bound;
   if (!c.outcome_certified) {
     bound = std::numeric_limits<W>::infinity();
@@ -300,8 +300,8 @@ evaluation_text certified_in(const contact_law& law, const Real& gamma, const Re
     // `certified_digits` significant digits: relative error < 10^(1 - digits), with a digit to spare.
     const W rel = c.certified_digits > 0 ? W(pow(W(10), 1 - c.certified_digits))
                                          : W(std::numeric_limits<W>::infinity());
-    const W abs_e = c.absolute_digits_e > 0 ? W(pow(W(10), 1 - c.absolute_digits_e))
-                                            : W(std::numeric_limits<W>::infinity());
+    const W abs_e = c.certified_absolute_digits_e > 0 ? W(pow(W(10), 1 - c.certified_absolute_digits_e))
+                                                      : W(std::numeric_limits<W>::infinity());
     if (relative) {
       bound = rel;  // digits covers 1 - e as well
       const W via_abs = as_requested(abs_e, c.one_minus_e, true);

@@ -81,7 +81,7 @@ inline int scene_digits(const std::string& tolerance, int extra = 3) {
 
 /// How gamma0 was calibrated (decimal text at the calibration's precision).
 struct scene_calibration {
-  std::string gamma0, gamma, g, e_error;
+  std::string gamma0, gamma, g, target_bound;
   int working_digits = 0;  ///< the calibration's working precision (written as precision.digits)
 };
 
@@ -230,7 +230,7 @@ resolved_scene<Real> resolve_scene(const scene_description& d) {
                                                            parse_real<C>(stiffness, "bead.k"), speed, grav, f,
                                                            e, options);
         return scene_calibration{to_decimal_string(c.gamma0), to_decimal_string(c.scaled.gamma),
-                                 to_decimal_string(c.scaled.g), to_decimal_string(c.scaled.e_error, 3),
+                                 to_decimal_string(c.scaled.g), to_decimal_string(c.scaled.target_bound, 3),
                                  decimal_digits<C>()};
       } catch (const unreachable_target& error) {
         throw unreachable_target(std::string("scene: damping.measured_e: ") + error.what());
