@@ -17,6 +17,12 @@ namespace viscor {
 
 namespace detail {
 
+/// Refuses (throws precision_unavailable) a result its scalar type cannot carry in
+/// full; nothing for the types whose exponent range holds every result. double_double
+/// specialises it (below), whose range ends near 1e-292.
+template <class Real>
+void require_carried(const impact_result<Real>&) {}
+
 /// A rebound with e > 1 beyond rounding contradicts the energy identity (with
 /// gamma >= 0 the energy v^2/2 + u^(alpha+1)/(alpha+1) - g u never increases, and it
 /// is e^2/2 at the return to u = 0, so e <= 1 under any load): the integration went
@@ -24,6 +30,7 @@ namespace detail {
 /// sticks). Such a result is not a value viscor can stand behind: it becomes undecided.
 template <class Real>
 impact_result<Real> undecided_unless_energy_allows(impact_result<Real> r) {
+  require_carried(r);
   if (r.outcome != impact_outcome::rebound || r.e <= 1 + 16 * epsilon<Real>()) return r;
   r.outcome = impact_outcome::undecided;
   r.error_estimate = r.e;  // all that is known: 0 <= e <= 1
@@ -67,22 +74,15 @@ namespace viscor::detail {
 /// double_double: precision_unavailable where e, 1 - e, the contact time, the maximal
 /// compression, its time or the stop overlap is nonzero and below 2^-939
 /// (double_double_smallest_reported, core/double_double.hpp), where double-double has
-/// lost digits to its exponent range; then the energy rule of the template above.
+/// lost digits to its exponent range.
 template <>
-inline impact_result<double_double> undecided_unless_energy_allows<double_double>(impact_result<double_double> r) {
+inline void require_carried<double_double>(const impact_result<double_double>& r) {
   require_double_double_range(r.e, "e");
   require_double_double_range(r.one_minus_e, "1 - e");
-  require_double_double_range(r.contact_time, "the contact time");
+  if (r.contact_time) require_double_double_range(*r.contact_time, "the contact time");
   require_double_double_range(r.max_compression, "the maximal compression");
   require_double_double_range(r.time_of_max_compression, "the time of maximal compression");
   require_double_double_range(r.stop_overlap, "the stop overlap");
-  // NOTE: the template's rule, written again: an explicit specialization cannot call it.
-  if (r.outcome != impact_outcome::rebound || r.e <= 1 + 16 * epsilon<double_double>()) return r;
-  r.outcome = impact_outcome::undecided;
-  r.error_estimate = r.e;
-  r.e = 0, r.one_minus_e = 1, r.energy_residual = 0;
-  r.contact_time = std::numeric_limits<double_double>::quiet_NaN();
-  return r;
 }
 }  // namespace viscor::detail
 #endif
