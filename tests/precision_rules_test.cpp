@@ -44,8 +44,12 @@ TEST(PrecisionRules, DigitsChooseTheCheapestTypeThatCarriesThem) {
   EXPECT_EQ(scalar_for_digits(15), scalar_kind::double_);
   EXPECT_EQ(scalar_for_digits(16), scalar_kind::long_double);
   EXPECT_EQ(scalar_for_digits(decimal_digits<long double>()), scalar_kind::long_double);
+#if VISCOR_HAS_QD  // double-double: about 5 times faster than float128 (docs/performance.md)
+  EXPECT_EQ(scalar_for_digits(decimal_digits<long double>() + 1), scalar_kind::double_double);
+  EXPECT_EQ(scalar_for_digits(31), scalar_kind::double_double);
+#endif
 #if VISCOR_HAS_FLOAT128
-  EXPECT_EQ(scalar_for_digits(decimal_digits<long double>() + 1), scalar_kind::quad);
+  EXPECT_EQ(scalar_for_digits(VISCOR_HAS_QD ? 32 : decimal_digits<long double>() + 1), scalar_kind::quad);
   EXPECT_EQ(scalar_for_digits(33), scalar_kind::quad);
 #endif
 #if VISCOR_HAS_MPFR

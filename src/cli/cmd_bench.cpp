@@ -1,5 +1,5 @@
 // viscor bench: the speed-accuracy trade, measured. For each method -- the double
-// approximations, the Taylor solve in double, long double, float128 and MPFR at
+// approximations, the Taylor solve in double, long double, double-double, float128 and MPFR at
 // chosen digits, certify, and evaluate at a few tolerances -- the median time per
 // CoR and the error against a reference, over a fixed point set per law.
 //
@@ -158,6 +158,10 @@ struct bench_command {
     out.push_back({"taylor", "double", [](const bench_point& p) { return std::optional<prepared>(taylor_at<double>(p)); }});
     out.push_back(
         {"taylor", "long double", [](const bench_point& p) { return std::optional<prepared>(taylor_at<long double>(p)); }});
+#if VISCOR_HAS_QD
+    out.push_back(
+        {"taylor", "double-double", [](const bench_point& p) { return std::optional<prepared>(taylor_at<double_double>(p)); }});
+#endif
 #if VISCOR_HAS_FLOAT128
     out.push_back({"taylor", "float128", [](const bench_point& p) { return std::optional<prepared>(taylor_at<quad>(p)); }});
 #endif
@@ -178,6 +182,15 @@ struct bench_command {
                        const contact_law law = p.law;
                        return prepared{[=] { *e = certify(law, gamma, g).e; }, [e] { return to_decimal_string(*e); }};
                      }});
+#if VISCOR_HAS_QD
+      out.push_back({"certify", "double-double", [](const bench_point& p) -> std::optional<prepared> {
+                       auto e = std::make_shared<double_double>(0);
+                       const double_double gamma = parse_real<double_double>(p.gamma, "gamma");
+                       const double_double g = parse_real<double_double>(p.g, "g");
+                       const contact_law law = p.law;
+                       return prepared{[=] { *e = certify(law, gamma, g).e; }, [e] { return to_decimal_string(*e); }};
+                     }});
+#endif
       for (int d : digit_list())
         out.push_back({"certify", "mpfr " + std::to_string(d), [d](const bench_point& p) -> std::optional<prepared> {
                          auto e = std::make_shared<std::string>();

@@ -6,6 +6,9 @@
 #include <viscor/core/scaling.hpp>
 #include <viscor/certify/certification.hpp>
 #include <viscor/impact/solve_impact.hpp>
+#if VISCOR_HAS_QD
+#include <viscor/core/double_double.hpp>
+#endif
 
 #define VISCOR_TEMPLATES(PREFIX, Real)                                                                  \
   PREFIX template std::optional<exact_result<Real>> exact_cor<Real>(const contact_law&, const Real&,    \
@@ -23,5 +26,8 @@
 #ifndef VISCOR_COMPILING_INSTANTIATIONS
 namespace viscor {
 VISCOR_FOR_EACH_REAL(VISCOR_EXTERN_TEMPLATES)
+#if VISCOR_HAS_QD
+VISCOR_EXTERN_TEMPLATES(::viscor::double_double)
+#endif
 }
 #endif

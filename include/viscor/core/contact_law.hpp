@@ -158,6 +158,17 @@ struct contact_law {
   exponent beta = exponent::rational(3, 2);
   std::string name;  ///< preset name, empty for a custom law
 
+ private:
+  // The name of an integer derived from the exponents, for an overflow message, built
+  // only when one is thrown (validate runs at every evaluation). Defined before its
+  // uses: its return type is deduced.
+  auto named(const char* what) const {
+    return [this, what] {
+      return "contact law alpha = " + alpha.to_string() + ", beta = " + beta.to_string() + ": " + what;
+    };
+  }
+
+ public:
   /// Throws invalid_parameter unless alpha >= 1 and beta >= 1 and, for rational
   /// exponents, Q, Q alpha, Q beta and the sums the solvers form of them
   /// (Q alpha + Q, 2 Q beta, Q alpha - Q beta + Q) fit in 64-bit integers.
@@ -168,10 +179,9 @@ struct contact_law {
       throw invalid_parameter("contact law exponent beta must be >= 1, got beta = " + beta.to_string());
     if (alpha.is_rational() && beta.is_rational()) {
       const exponent_multiples m = multiples();
-      const std::string law = "contact law alpha = " + alpha.to_string() + ", beta = " + beta.to_string() + ": ";
-      checked_sum(m.Q_alpha, m.Q, law + "Q (alpha + 1)");
-      checked_product(2, m.Q_beta, law + "2 Q beta");
-      checked_sum(checked_difference(m.Q_alpha, m.Q_beta, law + "Q (alpha - beta)"), m.Q, law + "Q (alpha - beta + 1)");
+      checked_sum(m.Q_alpha, m.Q, named("Q (alpha + 1)"));
+      checked_product(2, m.Q_beta, named("2 Q beta"));
+      checked_sum(checked_difference(m.Q_alpha, m.Q_beta, named("Q (alpha - beta)")), m.Q, named("Q (alpha - beta + 1)"));
     }
   }
 
@@ -179,11 +189,10 @@ struct contact_law {
   /// numerator times Q does not fit in 64 bits is refused (invalid_parameter
   /// naming the exponent) rather than wrapped around into another law.
   exponent_multiples multiples() const {
-    const std::string law = "contact law alpha = " + alpha.to_string() + ", beta = " + beta.to_string() + ": ";
     exponent_multiples m;
-    m.Q = checked_lcm(alpha.denominator(), beta.denominator(), law + "the common denominator Q");
-    m.Q_alpha = checked_product(m.Q / alpha.denominator(), alpha.numerator(), law + "Q alpha");
-    m.Q_beta = checked_product(m.Q / beta.denominator(), beta.numerator(), law + "Q beta");
+    m.Q = checked_lcm(alpha.denominator(), beta.denominator(), named("the common denominator Q"));
+    m.Q_alpha = checked_product(m.Q / alpha.denominator(), alpha.numerator(), named("Q alpha"));
+    m.Q_beta = checked_product(m.Q / beta.denominator(), beta.numerator(), named("Q beta"));
     return m;
   }
 

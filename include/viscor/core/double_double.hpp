@@ -31,16 +31,12 @@
 // value is in the range where the rules above hold, and solve_impact<double_double>
 // refuses a result with a value below 2^-939 (double_double_smallest_reported).
 //
-// Available where CMake found QD (target viscor::double_double, which defines
-// VISCOR_HAS_QD=1 and links libqd).
+// Available where CMake found QD (config.hpp's VISCOR_HAS_QD; the library then links
+// libqd); with_working_precision picks it for 19 to 31 digits (core/precision.hpp).
 #pragma once
 
 #include <viscor/core/real_io.hpp>
 #include <viscor/core/real_types.hpp>
-
-#ifndef VISCOR_HAS_QD
-#define VISCOR_HAS_QD 0
-#endif
 
 #if VISCOR_HAS_QD
 
@@ -193,6 +189,14 @@ class double_double {
     const double hi = static_cast<double>(x);
     m_v = std::isfinite(hi) ? dd_real::add(hi, static_cast<double>(x - static_cast<long double>(hi))) : dd_real(hi);
   }
+#if VISCOR_HAS_FLOAT128
+  /// The binary128 x rounded to double-double (Boost's quadrature tables are binary128
+  /// literals): hi the nearest double, lo the remainder's nearest double.
+  double_double(__float128 x) {  // NOLINT: implicit, as the tables' initialiser lists need
+    const double hi = static_cast<double>(x);
+    m_v = std::isfinite(hi) && hi != 0 ? dd_real::add(hi, static_cast<double>(x - static_cast<__float128>(hi))) : dd_real(hi);
+  }
+#endif
   /// The integer n, exactly (64-bit integers split into two doubles).
   template <std::integral I>
   double_double(I n) {  // NOLINT: implicit like every built-in promotion
@@ -233,6 +237,28 @@ class double_double {
     } else {
       const dd_real t = aint(m_v);  // both parts integers
       return static_cast<T>(static_cast<long long>(t.x[0]) + static_cast<long long>(t.x[1]));
+    }
+  }
+
+  /// hi + lo in a Boost.Multiprecision floating type (a reference type wider than this
+  /// one): exact where N's precision spans the bits from hi's leading one to lo's last,
+  /// else one rounding in N.
+  template <class B, boost::multiprecision::expression_template_option ET>
+  explicit operator boost::multiprecision::number<B, ET>() const {
+    boost::multiprecision::number<B, ET> x(m_v.x[0]);
+    x += m_v.x[1];
+    return x;
+  }
+  /// A Boost.Multiprecision number rounded to double-double: hi the nearest double, lo
+  /// the remainder's nearest double (within 2^-106 relative from 2^-969 up).
+  template <class B, boost::multiprecision::expression_template_option ET>
+  explicit double_double(const boost::multiprecision::number<B, ET>& x) {
+    const double hi = x.template convert_to<double>();
+    if (!std::isfinite(hi) || hi == 0) {
+      m_v = dd_real(hi);
+    } else {
+      const boost::multiprecision::number<B, ET> rest = x - hi;  // exact: x and hi share their leading bits
+      m_v = dd_real::add(hi, rest.template convert_to<double>());
     }
   }
 
@@ -472,6 +498,8 @@ inline double_double cos(const double_double& x) { return double_double(cos(x.qd
 inline double_double sinh(const double_double& x) { return double_double(sinh(x.qd())); }
 /// Hyperbolic cosine (QD).
 inline double_double cosh(const double_double& x) { return double_double(cosh(x.qd())); }
+/// Hyperbolic tangent (QD).
+inline double_double tanh(const double_double& x) { return double_double(tanh(x.qd())); }
 /// Inverse hyperbolic tangent (QD).
 inline double_double atanh(const double_double& x) { return double_double(atanh(x.qd())); }
 /// Arc tangent of y/x in the quadrant of (x, y) (QD).
@@ -622,9 +650,9 @@ inline double_double parse_real<double_double>(const std::string& text, const st
   if (!isfinite(x))
     throw invalid_parameter("parameter " + name + " = " + text + " overflows the working precision");
   if (detail::has_nonzero_digit(text) && (x == 0 || !carries_full_precision(x)))
-    throw invalid_parameter("parameter " + name + " = " + text +
-                            " underflows the working precision (nonzero, but below 2^-969 = 2.0e-292, where "
-                            "double-double keeps fewer than 31 digits; give 0 or use MPFR)");
+    throw exponent_range_exceeded("parameter " + name + " = " + text +
+                                  " underflows the working precision (nonzero, but below 2^-969 = 2.0e-292, where "
+                                  "double-double keeps fewer than 31 digits; give 0 or use MPFR)");
   return x;
 }
 
@@ -636,11 +664,11 @@ inline double_double parse_real<double_double>(const std::string& text, const st
 inline double double_double_smallest_reported() { return std::ldexp(1.0, -939); }
 
 namespace detail {
-/// Throws precision_unavailable when x is nonzero, finite and below
+/// Throws exponent_range_exceeded when x is nonzero, finite and below
 /// double_double_smallest_reported() in magnitude; `what` names the value.
 inline void require_double_double_range(const double_double& x, const std::string& what) {
   if (x.hi() == 0 || !std::isfinite(x.hi()) || std::fabs(x.hi()) >= double_double_smallest_reported()) return;
-  throw precision_unavailable(what + " = " + to_decimal_string(x, 6) +
+  throw exponent_range_exceeded(what + " = " + to_decimal_string(x, 6) +
                               " is below 2^-939 = 2.2e-283, where double-double (double's exponent range) no "
                               "longer carries its 31 digits; solve in MPFR instead");
 }

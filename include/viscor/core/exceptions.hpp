@@ -21,6 +21,13 @@ struct precision_unavailable : invalid_parameter {
   using invalid_parameter::invalid_parameter;
 };
 
+/// A value outside the exponent range in which the scalar type keeps its digits (a
+/// double-double below 2^-939): with_working_precision then runs the computation again
+/// in a type with a wider range.
+struct exponent_range_exceeded : precision_unavailable {
+  using precision_unavailable::precision_unavailable;
+};
+
 /// An iteration (root finder, integrator step budget) did not converge.
 struct convergence_error : error {
   using error::error;

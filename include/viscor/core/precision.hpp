@@ -1,10 +1,16 @@
-// Run-time choice of the scalar type from a requested number of decimal digits:
-// the cheapest built-in type that carries them, else mpfr_real at that precision.
+// Run-time choice of the scalar type from a requested number of decimal digits: the
+// cheapest type that carries them, else mpfr_real at that precision. Cheapest as
+// measured (docs/performance.md, bench table): double, long double, double-double
+// (about 5 times faster than float128 for a CoR), float128 (about 1.3 times faster
+// than MPFR at 33 digits on the Hertz-type laws), MPFR.
 #pragma once
 
 #include <viscor/core/exceptions.hpp>
 #include <viscor/core/real_io.hpp>
 #include <viscor/core/real_types.hpp>
+#if VISCOR_HAS_QD
+#include <viscor/core/double_double.hpp>
+#endif
 
 #include <string>
 
@@ -14,13 +20,14 @@ namespace viscor {
 inline constexpr int max_working_digits = 100000;
 
 /// The scalar type used for a request of `digits` decimal digits.
-enum class scalar_kind { double_, long_double, quad, mpfr };
+enum class scalar_kind { double_, long_double, double_double, quad, mpfr };
 
 /// The scalar type's name as printed by the CLI.
 inline std::string to_string(scalar_kind k) {
   switch (k) {
     case scalar_kind::double_: return "double";
     case scalar_kind::long_double: return "long double";
+    case scalar_kind::double_double: return "double-double";
     case scalar_kind::quad: return "float128";
     case scalar_kind::mpfr: return "mpfr";
   }
@@ -36,6 +43,9 @@ inline scalar_kind scalar_for_digits(int digits) {
                                 " exceeds the maximum of " + std::to_string(max_working_digits));
   if (digits <= decimal_digits<double>()) return scalar_kind::double_;
   if (digits <= decimal_digits<long double>()) return scalar_kind::long_double;
+#if VISCOR_HAS_QD
+  if (digits <= decimal_digits<double_double>()) return scalar_kind::double_double;
+#endif
 #if VISCOR_HAS_FLOAT128
   if (digits <= decimal_digits<quad>()) return scalar_kind::quad;
 #endif
@@ -49,12 +59,26 @@ inline scalar_kind scalar_for_digits(int digits) {
 
 /// Calls f.template operator()<Real>() with the scalar type for `digits`; for
 /// mpfr_real the thread's default precision is `digits` for the call's duration.
+/// Double-double keeps double's exponent range: when its call throws
+/// exponent_range_exceeded (an input or a result below 2^-939), f is called again in
+/// float128 (or MPFR), which carries the digits there, so f must be safe to call twice.
 /// Usage: with_working_precision(50, [&]<class Real>() { ... });
 template <class F>
 decltype(auto) with_working_precision(int digits, F&& f) {
   switch (scalar_for_digits(digits)) {
     case scalar_kind::double_: return f.template operator()<double>();
     case scalar_kind::long_double: return f.template operator()<long double>();
+#if VISCOR_HAS_QD
+    case scalar_kind::double_double:
+      try {
+        return f.template operator()<double_double>();
+      } catch (const exponent_range_exceeded&) {
+#if VISCOR_HAS_FLOAT128
+        return f.template operator()<quad>();
+#endif
+      }
+      break;  // to MPFR
+#endif
 #if VISCOR_HAS_FLOAT128
     case scalar_kind::quad: return f.template operator()<quad>();
 #endif

@@ -56,31 +56,3 @@ Real narrow(const W& x, [[maybe_unused]] unsigned real_digits10) {
 }
 
 }  // namespace viscor::detail
-
-#if defined(VISCOR_HAS_QD) && VISCOR_HAS_QD && VISCOR_HAS_MPFR
-#include <viscor/core/double_double.hpp>
-
-namespace viscor::detail {
-/// A double_double in run-time MPFR at the thread's working precision (at least 31
-/// digits): hi + lo rounded once, exact whenever that precision spans the bits from hi's
-/// leading one to lo's last (a GBS solve's 57 digits span any pair within 2^-137 of each
-/// other); otherwise off by that one rounding, far below double-double's own error.
-template <>
-inline mpfr_real widen<mpfr_real, double_double>(const double_double& x) {
-  mpfr_real y(x.hi());
-  const unsigned wanted = mpfr_real::thread_default_precision();
-  if (y.precision() < wanted) y.precision(wanted);
-  y += x.lo();
-  return y;
-}
-/// Run-time MPFR rounded to double_double: hi the nearest double, lo the remainder's
-/// nearest double (within 2^-106 relative from 2^-969 up).
-template <>
-inline double_double narrow<double_double, mpfr_real>(const mpfr_real& x, unsigned) {
-  const double hi = x.convert_to<double>();
-  if (!std::isfinite(hi) || hi == 0) return double_double(hi);
-  const mpfr_real rest = x - hi;
-  return double_double(dd_real::add(hi, rest.convert_to<double>()));
-}
-}  // namespace viscor::detail
-#endif

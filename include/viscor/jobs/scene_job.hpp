@@ -123,6 +123,8 @@ inline scene_result run_scene_file(const scene_file& file, const std::string& pa
     resolved_scene<Real> s;
     try {
       s = resolve_scene<Real>(file.scene);
+    } catch (const exponent_range_exceeded&) {
+      throw;  // with_working_precision retries in a wider type
     } catch (const invalid_parameter& e) {
       throw parse_error(file.locate(e.what()) + e.what());
     }

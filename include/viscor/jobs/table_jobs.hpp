@@ -59,6 +59,10 @@ inline json scalar_provenance(int digits) {
     j["requested_digits"] = digits;
     j["decimal_digits"] = decimal_digits<Real>();
     j["binary_digits"] = binary_digits<Real>();
+#if VISCOR_HAS_QD && VISCOR_HAS_FLOAT128
+    if constexpr (std::is_same_v<Real, double_double>)
+      j["below_range"] = "a row with a value below 2^-939 is computed in float128 (docs/precision.md)";
+#endif
     return j;
   });
 }
