@@ -153,5 +153,29 @@ TEST(error_map, parse_errors_name_file_line_and_field) {
   EXPECT_THROW(read_error_map("/nonexistent/map.csv"), parse_error);
 }
 
+TEST(error_map, edges_out_of_double_refused_and_nodes_finite) {
+  // An edge that under- or overflows double is refused naming it (1e-400 used to become
+  // an edge of 0 silently); nodes between edges far apart stay finite and positive.
+  auto message = [](const std::vector<std::string>& edges) {
+    try {
+      grid_nodes(edges, 2);
+    } catch (const invalid_parameter& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(message({"1e-400", "1"}).find("1e-400 underflows"), std::string::npos) << message({"1e-400", "1"});
+  EXPECT_NE(message({"1", "1e400"}).find("1e400 overflows"), std::string::npos) << message({"1", "1e400"});
+  EXPECT_NE(message({"1", "x"}).find("'x'"), std::string::npos) << message({"1", "x"});
+  const std::vector<std::string> nodes = grid_nodes({"1e-300", "1e300"}, 2);
+  ASSERT_EQ(nodes.size(), 3u);
+  EXPECT_EQ(nodes[0], "1e-300");
+  EXPECT_PRED_FORMAT3(test::relative_close<double>, std::stod(nodes[1]), 1.0, 1e-12) << nodes[1];
+  EXPECT_EQ(nodes[2], "1e300");
+  const std::vector<std::string> signed_nodes = grid_nodes({"-1.5e308", "1.5e308"}, 2);
+  ASSERT_EQ(signed_nodes.size(), 3u);
+  EXPECT_EQ(std::stod(signed_nodes[1]), 0.0) << signed_nodes[1];
+}
+
 }  // namespace
 }  // namespace viscor

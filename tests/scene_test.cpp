@@ -8,7 +8,9 @@
 #include <viscor/certify/extern_templates.hpp>
 #include <viscor/scenes/scene.hpp>
 
+#include <cmath>
 #include <string>
+#include <vector>
 
 namespace viscor {
 namespace {
@@ -121,6 +123,48 @@ TEST(scene, calibrate_then_evaluate_round_trip) {
     EXPECT_LE(rows[1].result.bound, tol);
     EXPECT_GT(rows[0].result.e, rows[1].result.e);  // slower impacts lose less (KK: gamma grows with v0)
   }
+}
+
+TEST(scene, velocity_ranges_end_at_the_given_speeds) {
+  // A linear range from 1e25 down to 2 ended at from + (to - from) = 0 in double (a
+  // fuzzer's finding: tests/fuzz/findings/scene/linear-range-ends-at-zero); log ranges
+  // whose ratio overflows or underflows ended at inf or 0.
+  scene_description d = steel_bead();
+  d.velocities.clear();
+  d.velocity_from = "9999999999999999999999990.5", d.velocity_to = "2", d.velocity_count = 32;
+  std::vector<double> v = resolve_scene<double>(d).velocities;
+  ASSERT_EQ(v.size(), 32u);
+  EXPECT_EQ(v.front(), 9999999999999999999999990.5);
+  EXPECT_EQ(v.back(), 2.0);
+  for (std::size_t i = 1; i < v.size(); ++i) EXPECT_LT(v[i], v[i - 1]) << i;
+  // Logarithmic, 1e-300 to 1e300 and back in 5 speeds: exactly the powers 10^(-300 + 150 i)
+  // up to rounding (truth: the decimal exponents, not the code's formula).
+  d.velocity_log = true, d.velocity_count = 5;
+  for (const bool up : {true, false}) {
+    d.velocity_from = up ? "1e-300" : "1e300", d.velocity_to = up ? "1e300" : "1e-300";
+    v = resolve_scene<double>(d).velocities;
+    ASSERT_EQ(v.size(), 5u);
+    for (std::size_t i = 0; i < 5; ++i) {
+      const double expected = std::pow(10.0, up ? -300.0 + 150.0 * i : 300.0 - 150.0 * i);
+      EXPECT_PRED_FORMAT3(relative_close<double>, v[i], expected, 1e-12) << (up ? "up " : "down ") << i;
+    }
+  }
+  // A linear span that overflows double (1e308 to 1.7e308 is fine; 1e-3 to 1.7e308 by
+  // thirds has a finite span, but 1.7e308 - (-...) cannot occur: speeds are > 0), so the
+  // overflowing case is only reached through the generic helper:
+  const std::vector<double> wide = spaced_range(-1.5e308, 1.5e308, 3, false);
+  ASSERT_EQ(wide.size(), 3u);
+  EXPECT_EQ(wide[0], -1.5e308);
+  EXPECT_EQ(wide[1], 0.0);
+  EXPECT_EQ(wide[2], 1.5e308);
+#if VISCOR_HAS_MPFR
+  // At 50 digits the interior of a log range is 10^k to 48 digits.
+  d.velocity_from = "1e-3", d.velocity_to = "1e3", d.velocity_count = 7, d.velocity_log = true;
+  const std::vector<mpfr_50> w = resolve_scene<mpfr_50>(d).velocities;
+  ASSERT_EQ(w.size(), 7u);
+  for (int i = 0; i < 7; ++i)
+    EXPECT_PRED_FORMAT3(relative_close<mpfr_50>, w[i], mpfr_50(pow(mpfr_50(10), i - 3)), mpfr_50(1e-48)) << i;
+#endif
 }
 
 TEST(scene, rows_in_physical_units_match_eq_2) {

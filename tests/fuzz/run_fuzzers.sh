@@ -9,7 +9,8 @@
 # time, so a long run on a shared machine gets the time it is credited with; the
 # fuzzer is stopped by SIGUSR1 (libFuzzer's graceful exit) once it has used it,
 # and an input may take 120 s of wall time before it counts as a hang (a busy
-# machine stretches wall time; a CI run keeps 10 s).
+# machine stretches wall time; a CI run keeps 10 s), and every input merged into the
+# corpus must then replay within 3 CPU-seconds.
 # Usage: tests/fuzz/run_fuzzers.sh [--update-corpus] [--cpu-time] BUILD_DIR SECONDS [NAME...]
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
@@ -79,8 +80,24 @@ run_one() {
   fi
   local merged=0
   if [ "$update" = 1 ] && [ -n "$(ls -A "$out/new")" ]; then
+    ls "$here/corpus/$name" > "$out/committed"
     "$fuzzer" -merge=1 "$here/corpus/$name" "$out/new" > "$out/merge.log" 2>&1
+    # A long run's hang limit is 120 s; a CI run's is 10 s of wall time on a slower
+    # machine: an input merged now must replay within 3 CPU-seconds, else it is a
+    # finding (kept in $out/slow, not committed).
+    local input slow=0
+    for input in $(ls "$here/corpus/$name" | grep -vxF -f "$out/committed"); do
+      if ! (ulimit -t 3; "$fuzzer" "$here/corpus/$name/$input" > /dev/null 2>&1); then
+        mkdir -p "$out/slow"
+        mv "$here/corpus/$name/$input" "$out/slow/"
+        slow=$((slow + 1))
+      fi
+    done
     merged=$(( $(ls "$here/corpus/$name" | wc -l) - committed_before ))
+    if [ "$slow" -gt 0 ]; then
+      echo "fuzz $name: FINDING: $slow new inputs took more than 3 CPU-seconds each (kept in $out/slow, not merged)"
+      return 1
+    fi
   fi
   echo "fuzz $name: $(grep -a -m1 -o 'stat::number_of_executed_units: *[0-9]*' "$out/log" | grep -o '[0-9]*$') runs in" \
        "$((SECONDS - start)) s (${used} s of CPU), corpus $committed_before committed + $(ls "$out/new" | wc -l) new" \

@@ -177,7 +177,18 @@ class taylor_impact_solver {
     }
   }
 
+  /// The phases below in order; a working type whose exponent range cannot hold the
+  /// Taylor series is reported with the problem named (with_working_precision reruns
+  /// double-double there in a wider type).
   impact_result<Real> solve() {
+    try {
+      return solve_phases();
+    } catch (const exponent_range_exceeded& e) {
+      throw exponent_range_exceeded(std::string("solve_impact (taylor): ") + e.what() + " " + describe());
+    }
+  }
+
+  impact_result<Real> solve_phases() {
     es end_sys(m_c, taylor_order(m_tol), m_tol);
     ts time_sys(m_c, taylor_order(m_tol), m_tol);
     taylor_integrator<Real, es> end_int(end_sys, m_tol);

@@ -16,6 +16,7 @@
 #pragma once
 
 #include <viscor/core/detail/root_finding.hpp>
+#include <viscor/core/exceptions.hpp>
 #include <viscor/ode/detail/taylor_series.hpp>
 #include <viscor/core/real_types.hpp>
 
@@ -124,7 +125,27 @@ class taylor_integrator {
   Real expand(const Real& t0, const std::vector<Real>& x, const Real& h_max) {
     for (std::size_t i = 0; i < m_jet.size(); ++i) m_jet[i][0] = x[i];
     m_system.jet(t0, m_jet);
+    require_representable_jet();
     return step_size(h_max);
+  }
+
+  /// Throws exponent_range_exceeded when a Taylor coefficient is not finite in a type
+  /// that carries more digits than double within double's exponent range (double-double).
+  /// NOTE: at high orders the coefficients near u = 0 under a large load grow like
+  /// (|v|/u)^k and overflow 2^1024 (double-double's order 37, not double's 20); the step
+  /// then becomes 0 and no halving helps, while float128's range holds them, so
+  /// with_working_precision reruns the solve there.
+  void require_representable_jet() const {
+    using limits = std::numeric_limits<Real>;
+    if constexpr (limits::max_exponent <= std::numeric_limits<double>::max_exponent &&
+                  limits::digits > std::numeric_limits<double>::digits) {
+      using boost::math::isfinite;
+      for (std::size_t i = 0; i < m_jet.size(); ++i)
+        for (std::size_t k = 0; k <= m_order; ++k)
+          if (!isfinite(m_jet[i][k]))
+            throw exponent_range_exceeded("the Taylor coefficient of order " + std::to_string(k) + " of component " +
+                                          std::to_string(i) + " overflows the exponent range of the working type");
+    }
   }
 
   /// The Jorba-Zou step of the current jet (see the file comment), capped at |h_max|.

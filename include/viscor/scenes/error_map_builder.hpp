@@ -28,6 +28,8 @@
 #include <viscor/approx/approximations.hpp>
 #include <viscor/scenes/error_map.hpp>
 #include <viscor/core/precision.hpp>
+#include <viscor/core/real_io.hpp>
+#include <viscor/scenes/spaced_range.hpp>
 #include <viscor/impact/solve_impact.hpp>
 
 #include <cmath>
@@ -74,8 +76,7 @@ inline std::vector<double> parse_edges(const std::vector<std::string>& edges, co
   if (edges.size() < 2) throw invalid_parameter("error map: " + name + " needs at least 2 edges");
   std::vector<double> v;
   for (const auto& e : edges) {
-    if (!looks_like_decimal(e)) throw invalid_parameter("error map: " + name + " edge '" + e + "' is not a number");
-    v.push_back(std::strtod(e.c_str(), nullptr));
+    v.push_back(parse_real<double>(e, name + " edge"));
     if (v.size() > 1 && !(v[v.size() - 2] < v.back()))
       throw invalid_parameter("error map: " + name + " must increase, got " + edges[v.size() - 2] + " then " + e);
   }
@@ -182,11 +183,8 @@ inline std::vector<std::string> grid_nodes(const std::vector<std::string>& edges
   std::vector<std::string> out;
   for (std::size_t i = 0; i + 1 < v.size(); ++i) {
     out.push_back(edges[i]);
-    for (int k = 1; k < per_interval; ++k) {
-      const double t = static_cast<double>(k) / per_interval;
-      const double x = v[i] > 0 ? v[i] * std::pow(v[i + 1] / v[i], t) : v[i] + (v[i + 1] - v[i]) * t;
-      out.push_back(detail::shortest(x));
-    }
+    const std::vector<double> nodes = spaced_range(v[i], v[i + 1], static_cast<std::size_t>(per_interval) + 1, v[i] > 0);
+    for (int k = 1; k < per_interval; ++k) out.push_back(detail::shortest(nodes[k]));
   }
   out.push_back(edges.back());
   return out;

@@ -24,6 +24,7 @@
 #include <viscor/core/contact_law.hpp>
 #include <viscor/core/elastic_contact.hpp>
 #include <viscor/scenes/evaluate.hpp>
+#include <viscor/scenes/spaced_range.hpp>
 #include <viscor/core/exceptions.hpp>
 #include <viscor/core/parameters.hpp>
 #include <viscor/core/real_io.hpp>
@@ -194,11 +195,7 @@ resolved_scene<Real> resolve_scene(const scene_description& d) {
     if (d.velocity_count > max_scene_impacts)
       throw invalid_parameter("scene: field velocities.count must be at most " + std::to_string(max_scene_impacts) +
                               ", got " + std::to_string(d.velocity_count));
-    using std::pow;
-    for (std::size_t i = 0; i < d.velocity_count; ++i) {
-      const Real t = d.velocity_count == 1 ? Real(0) : Real(Real(i) / Real(d.velocity_count - 1));
-      s.velocities.push_back(d.velocity_log ? Real(from * pow(to / from, t)) : Real(from + (to - from) * t));
-    }
+    s.velocities = spaced_range(from, to, d.velocity_count, d.velocity_log);
   }
   if (s.velocities.empty()) throw invalid_parameter("scene: missing field velocities (no impact speeds)");
 

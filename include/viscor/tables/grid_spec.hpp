@@ -112,18 +112,23 @@ inline exact_decimal axis_decimal(const std::string& text, const std::string& wh
   }
 }
 
-/// 10^(log10 a + k (log10 b - log10 a)/(n - 1)) rounded to `digits` significant
-/// digits. NOTE: evaluated in cpp_bin_float_50 (software arithmetic, identical on
-/// every platform), so the grid does not depend on the host's libm.
-inline exact_decimal log_point(const exact_decimal& a, const exact_decimal& b, std::int64_t k, std::int64_t n,
-                               int digits) {
+/// The interior values of a log range of n values from a to b (a > 0):
+/// 10^(log10 a + k (log10 b - log10 a)/(n - 1)), k = 1..n-2, each rounded to `digits`
+/// significant digits. NOTE: evaluated in cpp_bin_float_50 (software arithmetic,
+/// identical on every platform), so the grid does not depend on the host's libm; the
+/// two logarithms are taken once per range (a pow per value is the cost that remains).
+inline void append_log_interior(std::vector<exact_decimal>& values, const exact_decimal& a, const exact_decimal& b,
+                                std::int64_t n, int digits) {
   using big = boost::multiprecision::cpp_bin_float_50;
   const big la = log10(big(a.to_string())), lb = log10(big(b.to_string()));
-  const big t = la + (lb - la) * big(k) / big(n - 1);
-  const big v = pow(big(10), t);
+  const big span = lb - la;
   std::ostringstream out;
-  out << std::scientific << std::setprecision(digits - 1) << v;
-  return exact_decimal::parse(out.str(), "log grid value");
+  out << std::scientific << std::setprecision(digits - 1);
+  for (std::int64_t k = 1; k + 1 < n; ++k) {
+    out.str("");
+    out << big(pow(big(10), big(la + span * big(k) / big(n - 1))));
+    values.push_back(exact_decimal::parse(out.str(), "log grid value"));
+  }
 }
 
 }  // namespace detail
@@ -184,8 +189,7 @@ inline std::vector<std::string> expand_axis(const grid_axis& axis, const std::st
         throw parse_error(item.where_of("digits") + ": field " + field + ".digits: must be from 1 to 30, got " +
                           std::to_string(item.log_digits));
       values.push_back(a);
-      for (std::int64_t k = 1; k + 1 < item.count; ++k)
-        values.push_back(detail::log_point(a, b, k, item.count, item.log_digits));
+      detail::append_log_interior(values, a, b, item.count, item.log_digits);
       values.push_back(b);
     }
   }
