@@ -149,9 +149,8 @@ TEST(scene, velocity_ranges_end_at_the_given_speeds) {
       EXPECT_PRED_FORMAT3(relative_close<double>, v[i], expected, 1e-12) << (up ? "up " : "down ") << i;
     }
   }
-  // A linear span that overflows double (1e308 to 1.7e308 is fine; 1e-3 to 1.7e308 by
-  // thirds has a finite span, but 1.7e308 - (-...) cannot occur: speeds are > 0), so the
-  // overflowing case is only reached through the generic helper:
+  // A linear span that overflows double cannot come from speeds (both > 0), but from an
+  // error map's g edges (error_map_test) and any caller of the helper:
   const std::vector<double> wide = spaced_range(-1.5e308, 1.5e308, 3, false);
   ASSERT_EQ(wide.size(), 3u);
   EXPECT_EQ(wide[0], -1.5e308);
