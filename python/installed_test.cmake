@@ -6,7 +6,7 @@ include("${CMAKE_CURRENT_LIST_DIR}/../cmake/install_to_fresh_prefix.cmake")
 set(ENV{VISCOR_DATA} "")
 set(ENV{PYTHONPATH} "${PREFIX}/${PACKAGE_DIR}")
 execute_process(COMMAND "${PYTHON}" -c
-  "import viscor; print(viscor.__file__); print(viscor.data_directory()); print(viscor.exact('linear', '0.1').e)"
+  "import viscor; print(viscor.__file__); print(viscor.data_directory()); print(viscor.exact('linear', '0.1').e_exact)"
   WORKING_DIRECTORY "${WORK}" RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(rc)
   message(FATAL_ERROR "import of the installed module failed (${rc}): ${err}")

@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -94,6 +95,74 @@ TEST(CliFormula, BadValuesFilesAreRefusedNamingTheProblem) {
   EXPECT_NE(text.err.find("abc"), std::string::npos) << text.err;
   const auto linear_law = run_cli("formula points --alpha 1 --beta 1");
   EXPECT_EQ(linear_law.status, 2);
+  const auto not_utf8 = run_cli("formula check --model kuwabara_kono --tolerance 1e-3 --values " +
+                                write("latin1.csv", "gamma,g,e\n0.1,0.5,0.9\n# caf\xe9\n"));
+  EXPECT_EQ(not_utf8.status, 2);
+  EXPECT_NE(not_utf8.err.find("latin1.csv:3: not UTF-8"), std::string::npos) << not_utf8.err;
+  const std::string long_field(5000, '7');
+  const auto huge = run_cli("formula check --model kuwabara_kono --tolerance 1e-3 --values " +
+                            write("huge.csv", "gamma,g,e\n0.1,0.5," + long_field + "x\n"));
+  EXPECT_EQ(huge.status, 2);
+  EXPECT_LT(huge.err.size(), 400u) << "the message quotes the start of the field only";
+}
+
+// A verdict over nothing judged is no verdict: exit 2 naming why, and no output file;
+// region bounds and tolerances go through the one number parser.
+TEST(CliFormula, ACheckThatJudgesNothingIsRefused) {
+  if (!cli_built()) GTEST_SKIP() << "viscor CLI not built";
+  const std::string dir = ::testing::TempDir();
+  auto write = [&](const std::string& name, const std::string& text) {
+    std::ofstream(dir + name) << text;
+    return dir + name;
+  };
+  const std::string out = dir + "nothing_judged.json";
+  std::remove(out.c_str());
+  const auto header_only = run_cli("formula check --model kuwabara_kono --tolerance 1e-3 -o " + out + " --values " +
+                                   write("header_only.csv", "gamma,g,e\n"));
+  EXPECT_EQ(header_only.status, 2);
+  EXPECT_NE(header_only.err.find("judged no cell"), std::string::npos) << header_only.err;
+  EXPECT_NE(header_only.err.find("0 of 108 cells in the region judged"), std::string::npos) << header_only.err;
+  EXPECT_FALSE(std::ifstream(out).good()) << "no output for a check that judged nothing";
+  // Four certified points, each right, no two cells' corners among them: nothing judged.
+  // (Four that are the corners of one cell judge that cell: "1 of 108 cells".)
+  const std::string four = write("four.csv", "gamma,g,e\n" + [] {
+    std::string rows;
+    for (const char* point : {"1e-6,0", "2e-6,1e-4", "5e-6,0", "1e-5,1e-4"}) {
+      const auto comma = std::string(point).find(',');
+      rows += std::string(point) + "," +
+              viscor::to_decimal_string(prop2_numeric(std::stod(std::string(point).substr(0, comma)),
+                                                      std::stod(std::string(point).substr(comma + 1))), 17) + "\n";
+    }
+    return rows;
+  }());
+  const auto four_rows = run_cli("formula check --model kuwabara_kono --tolerance 1e-3 --values " + four);
+  EXPECT_EQ(four_rows.status, 2) << four_rows.out;
+  EXPECT_NE(four_rows.err.find("0 of 108 cells in the region judged; 5 points in no judged cell"), std::string::npos) << four_rows.err;
+
+  const std::string good = values_file("prop2_for_regions.csv", prop2_numeric);
+  const std::string check = "formula check --model kuwabara_kono --tolerance 1e-5 --values " + good;
+  const auto no_cell = run_cli(check + " --gamma-min 0.3 --gamma-max 0.4");  // between the edges 0.2 and 0.5
+  EXPECT_EQ(no_cell.status, 2);
+  EXPECT_NE(no_cell.err.find("the region holds no cell of the map"), std::string::npos) << no_cell.err;
+  const auto inverted = run_cli(check + " --gamma-min 0.01 --gamma-max 0.001");
+  EXPECT_EQ(inverted.status, 2);
+  EXPECT_NE(inverted.err.find("gamma_min = 0.01 is not below gamma_max = 0.001"), std::string::npos) << inverted.err;
+  for (const char* bound : {"nan", "inf", "0x10", "1e-400"}) {
+    const auto r = run_cli(check + " --gamma-max " + bound);
+    EXPECT_EQ(r.status, 2) << bound << ": " << r.out;
+    EXPECT_NE(r.err.find("gamma_max"), std::string::npos) << r.err;
+  }
+  for (const char* tolerance : {"1", "-1e-3", "nan", "2"}) {
+    const auto r = run_cli("formula check --model kuwabara_kono --values " + good + " --tolerance " + tolerance);
+    EXPECT_EQ(r.status, 2) << tolerance << ": " << r.out;
+    EXPECT_NE(r.err.find("tolerance"), std::string::npos) << r.err;
+  }
+  // The values from standard input, and the coverage line of a check that judged.
+  const auto from_stdin =
+      run_cli("formula check --model kuwabara_kono --tolerance 1e-5 --gamma-max 1e-3 --values - < " + good);
+  EXPECT_EQ(from_stdin.status, 0) << from_stdin.err;
+  EXPECT_NE(from_stdin.out.find("coverage   "), std::string::npos) << from_stdin.out;
+  EXPECT_NE(from_stdin.out.find(" cells in the region judged; "), std::string::npos) << from_stdin.out;
 }
 
 }  // namespace

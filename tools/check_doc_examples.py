@@ -84,7 +84,7 @@ def check_pages(pages, source, scratch, env):
             if done.returncode != 0:
                 failures += 1
                 print("%s: '%s' exited %d:\n%s" % (where, command, done.returncode, done.stderr), file=sys.stderr)
-            elif not checker.check_output(shown + "\n", got, doctest.ELLIPSIS):
+            elif not checker.check_output(shown + "\n" if shown else "", got, doctest.ELLIPSIS):  # "": prints nothing
                 failures += 1
                 print("%s: '%s' prints what the page does not show:\n--- page\n%s\n--- program\n%s"
                       % (where, command, shown, got), file=sys.stderr)

@@ -219,19 +219,22 @@ py::tuple formula_points(const std::string& law) {
 }
 
 // A formula's values at formula_points(law), compared cell by cell (jobs/formula_job.hpp).
+// The tolerance and the region's bounds come as text ("" for an unbounded side) and go
+// through the number parser the CLI uses (jobs::formula_tolerance_of, formula_region_of).
 py::object compare_formula(const std::string& law, const double_array& values, const std::string& quantity,
-                           double tolerance, const std::vector<double>& region) {
+                           const std::string& tolerance, const std::vector<std::string>& region) {
   if (quantity != "e" && quantity != "one_minus_e")
     throw invalid_parameter("compare: quantity must be 'e' or 'one_minus_e', got '" + quantity + "'");
   if (region.size() != 4) throw invalid_parameter("compare: region is (gamma_min, gamma_max, g_min, g_max)");
   const formula_quantity q = quantity == "e" ? formula_quantity::e : formula_quantity::one_minus_e;
+  const double tol = jobs::formula_tolerance_of(tolerance);
+  const formula_region where = jobs::formula_region_of(region[0], region[1], region[2], region[3]);
   std::vector<double> v(values.data(), values.data() + values.size());
   jobs::json object;
   {
     py::gil_scoped_release release;
     const jobs::formula_reference r = jobs::committed_formula_reference(law_by_name(law));
-    const formula_region where{region[0], region[1], region[2], region[3]};
-    const formula_comparison c = compare_formula_values(r.points, v, q, r.grid, tolerance, where);
+    const formula_comparison c = compare_formula_values(r.points, v, q, r.grid, tol, where);
     object = jobs::formula_comparison_json(c, r, q);
     object["text"] = jobs::formula_comparison_text(c, r);
   }
@@ -262,7 +265,10 @@ void bind_commands(py::module_& m) {
         "The (gamma, g) arrays of the certified points a formula of the law is checked at.");
   m.def("compare_formula", &compare_formula, py::arg("law"), py::arg("values"), py::arg("quantity"),
         py::arg("tolerance"), py::arg("region"),
-        "A formula's values at formula_points(law) against the certified e, per cell (a dict).");
+        "A formula's values at formula_points(law) against the certified e, per cell (a dict); tolerance and\n"
+        "region (gamma_min, gamma_max, g_min, g_max) as decimal text, \"\" for an unbounded side.");
+  m.def("formula_tolerance", &jobs::formula_tolerance_of, py::arg("tolerance"),
+        "A formula check's tolerance on |de| from decimal text, refused outside [0, 1) (as the CLI's --tolerance).");
   m.def(
       "merge_tables",
       [](const std::vector<std::string>& inputs, const std::string& output) {

@@ -5,10 +5,12 @@ Python bindings of the C++ library (docs/python.md). Scaled model:
 
     >>> import viscor
     >>> r = viscor.cor('kuwabara_kono', '0.05', '1', digits=50)
-    >>> r.e                      # the exact decimal string at 50 digits
+    >>> r.e                      # a float, the double nearest to the 50-digit value
+    >>> r.e_exact                # the exact decimal string at 50 digits
     >>> r.decimal('one_minus_e')  # decimal.Decimal
 
-Field names are those of the JSON output (docs/json-schema.md). Bad input raises
+Field names are those of the JSON output (docs/json-schema.md); quantities read as
+numbers, their exact decimals as NAME_exact. Bad input raises
 InvalidParameter (a ValueError) with the library's message.
 """
 

@@ -256,7 +256,7 @@ class Points(list):
 
     def strings(self, name):
         """Field `name` of every point as its exact decimal string (None where absent)."""
-        return [r.get(name) for r in self]
+        return [r.exact(name) if name in r else None for r in self]
 
     def column(self, name):
         """Field `name` of every point as a NumPy float64 array (NaN where absent)."""

@@ -1,33 +1,46 @@
-"""Regression tests of a CoR formula of your own (docs/formulas.md): compare()."""
+"""Regression tests of a CoR formula of your own (docs/formulas.md): compare().
 
-import collections
+Every check has one truth rule: ``bool(check)`` is its verdict, and a check that
+judged nothing is false and says why (``check.reason``)."""
 
 from . import _viscor
+from ._inputs import number_text
 from ._result import Result
 
 
 class FormulaCheck(Result):
     """The check of a formula against the certified tables (the fields of ``viscor
-    formula check --json``): pass, failed_cells, overall, cells (each with
-    max_abs_e, median_abs_e, max_rel_one_minus_e, worst, outcome mismatches, pass).
+    formula check --json``, numbers as numbers): pass, failed_cells, coverage,
+    overall, cells (each with max_abs_e, median_abs_e, max_rel_one_minus_e, worst,
+    outcome mismatches, pass). ``bool(check)`` is the verdict: false when a cell
+    fails and when no cell was judged (``check.reason`` says which).
     ``str(check)`` is the readable summary; ``check.plot()`` draws the error map."""
 
     __slots__ = ()
 
     def __bool__(self):
-        return bool(self._fields["pass"])
+        return self._fields["pass"] is True
 
     def __str__(self):
         return self._fields["text"]
 
+    @property
+    def reason(self):
+        """Why the check is false ("" when it passes)."""
+        if self:
+            return ""
+        if "reason" in self._fields:
+            return self._fields["reason"]
+        return f"{self._fields['failed_cells']} cell(s) fail"
+
     def column(self, name):
         """Field `name` of every cell as a NumPy array: float64 for numbers (NaN where
-        absent), bool for `pass`, str for edges given as text (a pandas-free table)."""
+        absent), bool for `pass`, str for `outcome` (a pandas-free table)."""
         import numpy as np
         values = [c.get(name) for c in self._fields["cells"]]
         if name == "pass":
             return np.array(values, dtype=bool)
-        if name in ("gamma_lo", "gamma_hi", "g_lo", "g_hi", "outcome"):
+        if name == "outcome":
             return np.array(values, dtype=str)
         return np.array([float(v) if v not in (None, "") else float("nan") for v in values], dtype=np.float64)
 
@@ -37,10 +50,50 @@ class FormulaCheck(Result):
         return plot_formula_check(self.to_dict(), path, ax)
 
 
-PointCheck = collections.namedtuple("PointCheck", "gamma g value truth abs_error bound bound_kind method")
-PointCheck.__doc__ = """A formula against evaluate() at points outside the tables: arrays of the
-broadcast shape; bound_kind says what the truth's bound is ('empirical': evaluate's
-error maps and solver estimates, not certified)."""
+class PointCheck:
+    """A formula against evaluate() at points outside the tables: arrays of the
+    broadcast shape (gamma, g, value, truth, abs_error, bound, bound_kind, method,
+    passed); bound_kind says what the truth's bound is ('empirical': evaluate's
+    error maps and solver estimates, not certified).
+
+    A point passes when abs_error + bound <= tolerance (the formula is within the
+    tolerance of the truth even where the truth is off by its bound) and its value is
+    finite. ``bool(check)`` is the verdict: every point passes, and there is at least
+    one point; ``check.reason`` says why it is false."""
+
+    __slots__ = ("gamma", "g", "value", "truth", "abs_error", "bound", "bound_kind", "method", "tolerance", "passed")
+    _fields = ("gamma", "g", "value", "truth", "abs_error", "bound", "bound_kind", "method")
+
+    def __init__(self, gamma, g, value, truth, abs_error, bound, bound_kind, method, tolerance):
+        import numpy as np
+        for name, array in zip(self._fields, (gamma, g, value, truth, abs_error, bound, bound_kind, method)):
+            object.__setattr__(self, name, array)
+        object.__setattr__(self, "tolerance", tolerance)
+        passed = np.isfinite(value) & np.isfinite(truth) & (abs_error + bound <= tolerance)
+        object.__setattr__(self, "passed", passed)
+
+    def __setattr__(self, name, value):
+        raise AttributeError("viscor checks are read-only")
+
+    def __bool__(self):
+        return bool(self.passed.size > 0 and self.passed.all())
+
+    @property
+    def reason(self):
+        """Why the check is false ("" when it passes)."""
+        if self.passed.size == 0:
+            return "no point judged: gamma and g hold no point"
+        failed = int(self.passed.size - self.passed.sum())
+        if failed == 0:
+            return ""
+        import numpy as np
+        worst = float(np.nanmax(np.where(self.passed, -np.inf, self.abs_error + self.bound))) if failed else 0.0
+        return (f"{failed} of {self.passed.size} point(s) fail: |de| + the truth's bound up to {worst:.3g} "
+                f"(or not finite), tolerance {self.tolerance:.3g}")
+
+    def __repr__(self):
+        verdict = "pass" if self else "FAIL: " + self.reason
+        return f"viscor.PointCheck({self.passed.size} points, tolerance {self.tolerance:.3g}, {verdict})"
 
 
 def compare(fn, law, tol, *, quantity="e", region=None, gamma=None, g=None):
@@ -49,12 +102,14 @@ def compare(fn, law, tol, *, quantity="e", region=None, gamma=None, g=None):
     fn takes NumPy float64 arrays gamma and g and returns e (or 1 - e with
     quantity='one_minus_e'). It is evaluated at the certified points that the law's
     committed error map was built from, and judged cell by cell of that map
-    (|de| <= tol, outcomes right): a FormulaCheck, true when every cell passes.
-    region=(gamma_min, gamma_max, g_min, g_max) keeps only the cells inside.
+    (|de| <= tol, outcomes right): a FormulaCheck, true when every judged cell
+    passes and at least one cell was judged. tol is in [0, 1) (as the CLI's
+    --tolerance). region=(gamma_min, gamma_max, g_min, g_max) keeps only the cells
+    inside; None for an unbounded side.
 
     With gamma= and g= (array-likes, broadcast): points outside the tables, against
     evaluate() at tolerance tol / 10 instead: a PointCheck whose bounds are
-    empirical, not certified.
+    empirical, not certified, true when every point is within tol.
     """
     import numpy as np
 
@@ -62,14 +117,23 @@ def compare(fn, law, tol, *, quantity="e", region=None, gamma=None, g=None):
         raise TypeError(f"compare() needs a function of (gamma, g), got {fn!r}")
     if quantity not in ("e", "one_minus_e"):
         raise _viscor.InvalidParameter(f"compare: quantity must be 'e' or 'one_minus_e', got {quantity!r}")
+    tol_text = number_text(tol, "tolerance")
+    tolerance = _viscor.formula_tolerance(tol_text)
     if gamma is not None or g is not None:
-        return _compare_with_evaluate(fn, law, tol, quantity, gamma, g)
+        if region is not None:
+            raise _viscor.InvalidParameter("compare: give region= (certified cells) or gamma= and g= (points), not both")
+        return _compare_with_evaluate(fn, law, tolerance, quantity, gamma, g)
+    if region is None:
+        region = (None, None, None, None)
+    if len(region) != 4:
+        raise _viscor.InvalidParameter(f"compare: region is (gamma_min, gamma_max, g_min, g_max), got {region!r}")
+    names = ("gamma_min", "gamma_max", "g_min", "g_max")
+    where = ["" if x is None else number_text(x, name) for x, name in zip(region, names)]
     points_gamma, points_g = _viscor.formula_points(law)
     values = np.asarray(fn(points_gamma.copy(), points_g.copy()), dtype=np.float64)
     if values.shape != points_gamma.shape:
         raise _viscor.InvalidParameter(f"compare: fn returned shape {values.shape} for {points_gamma.shape} points")
-    where = (0.0, float("inf"), float("-inf"), float("inf")) if region is None else tuple(float(x) for x in region)
-    return FormulaCheck(_viscor.compare_formula(law, values, quantity, float(tol), list(where)))
+    return FormulaCheck(_viscor.compare_formula(law, values, quantity, tol_text, where))
 
 
 def _compare_with_evaluate(fn, law, tol, quantity, gamma, g):
@@ -79,10 +143,12 @@ def _compare_with_evaluate(fn, law, tol, quantity, gamma, g):
     gamma, g = np.broadcast_arrays(np.asarray(gamma, dtype=np.float64), np.asarray(g, dtype=np.float64))
     truth = evaluate(law, gamma, g, tol=tol / 10)
     values = np.asarray(fn(gamma.copy(), g.copy()), dtype=np.float64)
+    if values.shape != gamma.shape:
+        values = np.broadcast_to(values, gamma.shape)  # a constant formula, say
     e = values if quantity == "e" else 1 - values
     method = np.array([EVALUATION_METHODS[k] for k in truth.method.reshape(-1)]).reshape(truth.method.shape)
     return PointCheck(gamma, g, e, truth.e, np.abs(e - truth.e), truth.empirical_bound,
-                      np.full(gamma.shape, "empirical"), method)
+                      np.full(gamma.shape, "empirical"), method, tol)
 
 
 def plot_formula_check(check, path=None, ax=None):

@@ -1,16 +1,36 @@
-"""Result: a JSON object of viscor (docs/json-schema.md) read as attributes."""
+"""Result: a JSON object of viscor (docs/json-schema.md) read as attributes, its
+numbers as numbers."""
 
 import decimal
+import re
+
+# A decimal number as the library writes it (numbers are JSON strings at the working
+# precision); "nan" is an unknown quantity (a contact time), "inf" a bound that is none.
+_NUMBER = re.compile(r"[+-]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][+-]?[0-9]+)?|[+-]?(?:inf|nan)")
+# Fields whose text is not a quantity: law exponents are exact fractions ("3/2", "1"),
+# versions and commits are names.
+_TEXT_FIELDS = frozenset({"name", "alpha", "beta", "version", "commit", "git_commit", "viscor", "source", "line"})
+_EXACT_SUFFIX = "_exact"
+
+
+def _number(name, value):
+    """`value` as a float when it is the decimal text of a quantity, else as it is."""
+    if isinstance(value, str) and name not in _TEXT_FIELDS and _NUMBER.fullmatch(value):
+        return float(value)
+    return value
 
 
 class Result:
     """The fields of one viscor JSON object, under their JSON names.
 
-    ``r.e`` is the exact decimal string the library printed (the working
-    precision's value), ``r.decimal('e')`` the same number as ``decimal.Decimal``,
-    ``r.mpf('e')`` as ``mpmath.mpf`` at the working binary precision (needs
-    mpmath). Nested objects (``r.law``, ``r.precision``, ``r.certified``) are
-    Results too; ``r.to_dict()`` gives the plain JSON data.
+    ``r.e`` is a number: the float nearest to the working precision's value (so
+    ``r.e * 2`` and ``r.e < 0.9`` work). The exact value is ``r.e_exact``, the
+    decimal string the library printed, also as ``decimal.Decimal``
+    (``r.decimal('e')``) and as ``mpmath.mpf`` at the working binary precision
+    (``r.mpf('e')``, needs mpmath). Text stays text (outcome, method, the law's
+    exact exponents). Nested objects (``r.law``, ``r.precision``, ``r.certified``)
+    are Results too; ``r.to_dict()`` gives the plain JSON data (numbers as the
+    exact strings).
     """
 
     __slots__ = ("_fields", "_binary_digits")
@@ -22,27 +42,33 @@ class Result:
             binary_digits = precision["binary_digits"]
         object.__setattr__(self, "_binary_digits", binary_digits)
 
-    def _wrap(self, value):
+    def _wrap(self, value, name=""):
         if isinstance(value, dict):
             return Result(value, self._binary_digits)
         if isinstance(value, list):
-            return [self._wrap(v) for v in value]
-        return value
+            return [self._wrap(v, name) for v in value]
+        return _number(name, value)
+
+    def _field(self, name):
+        if name in self._fields:
+            return self._wrap(self._fields[name], name)
+        if name.endswith(_EXACT_SUFFIX) and isinstance(self._fields.get(name[:-len(_EXACT_SUFFIX)]), str):
+            return self._fields[name[:-len(_EXACT_SUFFIX)]]  # e_exact: the exact decimal string of e
+        raise KeyError(name)
 
     def __getattr__(self, name):
         if name.startswith("__") or name == "_fields":  # copy and pickle probe these before _fields is set
             raise AttributeError(name)
         try:
-            value = self._fields[name]
+            return self._field(name)
         except KeyError:
             raise AttributeError(f"no field {name!r} in this result (fields: {', '.join(self._fields)})") from None
-        return self._wrap(value)
 
     def __setattr__(self, name, value):
         raise AttributeError("viscor results are read-only")
 
     def __getitem__(self, name):
-        return self._wrap(self._fields[name])
+        return self._field(name)
 
     def __contains__(self, name):
         return name in self._fields
@@ -59,7 +85,14 @@ class Result:
         return self._fields.keys()
 
     def get(self, name, default=None):
-        return self._wrap(self._fields.get(name, default))
+        try:
+            return self._field(name)
+        except KeyError:
+            return default
+
+    def exact(self, name):
+        """Field `name` as the library wrote it: the exact decimal string of a number."""
+        return self._fields[name]
 
     def to_dict(self):
         """The JSON data (decimal strings stay strings)."""

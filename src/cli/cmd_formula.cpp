@@ -2,7 +2,8 @@
 // the certified tables (the formula job, jobs/formula_job.hpp; docs/formulas.md).
 //   viscor formula points --model LAW [-o FILE]        the points to evaluate (CSV gamma,g)
 //   viscor formula check --model LAW --values FILE --tolerance T [--gamma-min ...] [--json] [-o FILE]
-// `check` exits 0 when every cell passes, 1 when one fails, 2 for bad input.
+// `check` exits 0 when every judged cell passes, 1 when one fails, 2 for bad input
+// and when no cell could be judged.
 #include "cli_common.hpp"
 #include "command_registry.hpp"
 
@@ -36,16 +37,22 @@ struct check_command {
   law_options law;
   output_options output;
   std::string data, values, tolerance;
-  formula_region region;
+  std::string gamma_min, gamma_max, g_min, g_max;  // "" when not given: that side is unbounded
 
   void run() const {
-    if (values.empty()) throw invalid_parameter("formula check needs --values FILE (gamma,g,e or gamma,g,one_minus_e)");
+    if (values.empty())
+      throw invalid_parameter("formula check needs --values FILE (gamma,g,e or gamma,g,one_minus_e; - for stdin)");
     if (tolerance.empty()) throw invalid_parameter("formula check needs --tolerance, the largest |de| allowed");
-    const double tol = parse_real<double>(tolerance, "tolerance");
+    const double tol = formula_tolerance_of(tolerance);
+    const formula_region region = formula_region_of(gamma_min, gamma_max, g_min, g_max);
     formula_reference r = committed_formula_reference(law.resolve(), data);
     const formula_values given = read_formula_values(values);
     const std::vector<double> at = values_at_reference(r, given);
     const formula_comparison c = compare_formula_values(r.points, at, given.quantity, r.grid, tol, region);
+    // A check that judged nothing is refused as bad input, before any output is written.
+    if (!c.judged_any())
+      throw invalid_parameter("formula check judged no cell: " + formula_nothing_judged(c, r) + " (" +
+                              formula_coverage_text(c) + ")");
     json j = formula_comparison_json(c, r, given.quantity);
     j["command"] = "formula check";
     output.emit(formula_comparison_text(c, r), j);
@@ -66,12 +73,12 @@ void setup(CLI::App& app) {
   CLI::App* c = app.add_subcommand("check", "compare a formula's values with the certified e, cell by cell");
   check->law.add_to(*c);
   check->output.add_to(*c);
-  c->add_option("--values", check->values, "CSV with the header gamma,g,e (or gamma,g,one_minus_e)");
-  c->add_option("--tolerance", check->tolerance, "the largest |de| allowed in every cell");
-  c->add_option("--gamma-min", check->region.gamma_min, "check only cells with gamma >= this");
-  c->add_option("--gamma-max", check->region.gamma_max, "check only cells with gamma <= this");
-  c->add_option("--g-min", check->region.g_min, "check only cells with g >= this");
-  c->add_option("--g-max", check->region.g_max, "check only cells with g <= this");
+  c->add_option("--values", check->values, "CSV with the header gamma,g,e (or gamma,g,one_minus_e); - reads stdin");
+  c->add_option("--tolerance", check->tolerance, "the largest |de| allowed in every cell, in [0, 1)");
+  c->add_option("--gamma-min", check->gamma_min, "check only cells with gamma >= this");
+  c->add_option("--gamma-max", check->gamma_max, "check only cells with gamma <= this");
+  c->add_option("--g-min", check->g_min, "check only cells with g >= this");
+  c->add_option("--g-max", check->g_max, "check only cells with g <= this");
   c->add_option("--data", check->data, "the data directory (default: as for report)");
   c->callback([check] { check->run(); });
 }

@@ -41,15 +41,15 @@ class LinearLawClosedForm(unittest.TestCase):
         named = viscor.cor("kuwabara_kono", "0.05", "1", digits=30)
         custom = viscor.cor(gamma=decimal.Decimal("0.05"), g=1, digits=30, alpha=fractions.Fraction(3, 2),
                             beta="3/2")
-        self.assertEqual(named.e, custom.e)
+        self.assertEqual(named.e_exact, custom.e_exact)
         self.assertEqual(custom.law.name, "")
 
     def test_float_is_its_exact_binary_value(self):
         as_float = viscor.cor("linear", 0.05, 0, digits=40)
         exact_binary = viscor.cor("linear", str(decimal.Decimal(0.05)), 0, digits=40)
         as_decimal = viscor.cor("linear", "0.05", 0, digits=40)
-        self.assertEqual(as_float.e, exact_binary.e)
-        self.assertNotEqual(as_float.e, as_decimal.e)
+        self.assertEqual(as_float.e_exact, exact_binary.e_exact)
+        self.assertNotEqual(as_float.e_exact, as_decimal.e_exact)
 
 
 class CertifiedTable(unittest.TestCase):
@@ -89,23 +89,35 @@ class SameDigitsAsTheCli(unittest.TestCase):
         cli = json.loads(out)
         r = viscor.cor("kuwabara_kono", "0.05", "1", digits=50)
         for field in ("e", "one_minus_e", "contact_time", "max_compression", "time_of_max_compression",
-                      "error_estimate", "outcome", "method", "gamma", "g"):
+                      "error_estimate", "gamma", "g"):
+            self.assertEqual(getattr(r, field + "_exact"), cli[field], field)  # the exact decimal, digit for digit
+            self.assertEqual(getattr(r, field), float(cli[field]), field)      # and the number nearest to it
+        for field in ("outcome", "method"):
             self.assertEqual(getattr(r, field), cli[field], field)
         self.assertEqual(r.precision.to_dict(), cli["precision"])
         self.assertEqual(r.steps, cli["steps"])
         self.assertEqual(set(r.keys()), set(cli.keys()))
         text = subprocess.run([CLI, "cor", "--model", "kuwabara_kono", "--gamma", "0.05", "--g", "1", "--digits",
                                "50"], check=True, capture_output=True, text=True).stdout
-        self.assertIn("e          " + r.e + "\n", text)
+        self.assertIn("e          " + r.e_exact + "\n", text)
 
 
 class ResultObject(unittest.TestCase):
     def test_conversions(self):
         r = viscor.cor("tsuji", "0.1", "0.5", digits=50)
-        self.assertIsInstance(r.e, str)
-        self.assertEqual(r.decimal("e"), decimal.Decimal(r.e))
+        self.assertIsInstance(r.e, float)  # a number: arithmetic and comparisons work
+        self.assertEqual(r.e * 2, 2 * float(decimal.Decimal(r.e_exact)))
+        self.assertTrue(0.6 < r.e < 0.7)
+        self.assertIsInstance(r.e_exact, str)
+        self.assertEqual(r["e"], r.e)
+        self.assertEqual(r.exact("e"), r.e_exact)
+        self.assertEqual(r.to_dict()["e"], r.e_exact)
+        self.assertEqual(r.decimal("e"), decimal.Decimal(r.e_exact))
+        self.assertEqual(float(r.decimal("e")), r.e)  # the float nearest to the exact value
         self.assertIsInstance(r.decimal("e"), decimal.Decimal)
-        self.assertAlmostEqual(float(r.e) + float(r.one_minus_e), 1.0, places=14)
+        self.assertAlmostEqual(r.e + r.one_minus_e, 1.0, places=14)
+        self.assertIsInstance(r.contact_time, float)
+        self.assertEqual(r.outcome, "rebound")  # text stays text
         self.assertEqual(r.law.name, "tsuji")
         self.assertEqual(r.law.alpha, "3/2")
         self.assertEqual(r.precision.digits, 50)
@@ -119,7 +131,7 @@ class ResultObject(unittest.TestCase):
             x = r.mpf("e")
             self.assertEqual(x.context.prec, 53)  # mpmath's global precision is left alone
             with mpmath.workdps(60):
-                self.assertEqual(mpmath.nstr(x, 50), mpmath.nstr(mpmath.mpf(r.e), 50))
+                self.assertEqual(mpmath.nstr(x, 50), mpmath.nstr(mpmath.mpf(r.e_exact), 50))
 
     def test_stick(self):
         r = viscor.cor("hertz_linear_damping", "1.5", "1", digits=20)

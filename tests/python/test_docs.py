@@ -1,4 +1,4 @@
-"""The Python examples of the docs run as shown: every `>>>` line of docs/python.md is
+"""The Python examples of the docs run as shown: every `>>>` line of docs/python.md and docs/formulas.md is
 run and what it prints is compared with what the page shows (doctest), so a page
 cannot show a value the module does not return."""
 
@@ -24,6 +24,14 @@ class DocsShowWhatTheModuleReturns(unittest.TestCase):
         result = runner.summarize(verbose=False)
         self.assertGreaterEqual(result.attempted, 15, "docs/python.md lost its >>> examples")
         self.assertEqual(result.failed, 0, "docs/python.md shows values the module does not return (see above)")
+
+    def test_formulas_md(self):
+        test = markdown_doctest(os.path.join(SOURCE_DIR, "docs", "formulas.md"))
+        runner = doctest.DocTestRunner(optionflags=doctest.ELLIPSIS)
+        runner.run(test)
+        result = runner.summarize(verbose=False)
+        self.assertGreaterEqual(result.attempted, 12, "docs/formulas.md lost its >>> examples")
+        self.assertEqual(result.failed, 0, "docs/formulas.md shows values the module does not return (see above)")
 
     def test_a_wrong_value_on_the_page_fails(self):
         text = ">>> 1 + 1\n3\n"

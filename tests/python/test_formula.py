@@ -30,8 +30,13 @@ class Compare(unittest.TestCase):
     def test_pass_within_tolerance(self):
         check = viscor.compare(accurate, "kuwabara_kono", 1e-9, region=(0, 1e-3, 0, 10))
         self.assertTrue(check, str(check))
+        self.assertEqual(check.reason, "")
         self.assertGreater(len(check.cells), 10)
-        self.assertLessEqual(float(check.overall.max_abs_e), 1e-9)
+        self.assertLessEqual(check.overall.max_abs_e, 1e-9)  # a number, not a string
+        self.assertIsInstance(check.overall.max_abs_e, float)
+        self.assertEqual(check.coverage.cells_judged, len(check.cells))
+        self.assertGreaterEqual(check.coverage.cells_in_region, check.coverage.cells_judged)
+        self.assertIn("coverage   ", str(check))
         worst = check.column("max_abs_e")
         self.assertEqual(worst.shape, (len(check.cells),))
         self.assertEqual(worst.max(), float(check.overall.max_abs_e))
@@ -56,6 +61,41 @@ class Compare(unittest.TestCase):
         self.assertEqual(r.abs_error.shape, (2,))
         self.assertTrue(np.all(r.abs_error <= 1e-6))
         self.assertEqual(set(r.bound_kind), {"empirical"})
+        self.assertTrue(r, r.reason)
+        self.assertTrue(r.passed.all())
+
+    def test_every_check_type_is_false_when_its_formula_is_wrong(self):
+        # One truth rule: bool(check) is the verdict, for points as for cells.
+        zero = viscor.compare(lambda ga, g: 0 * ga, "kuwabara_kono", 1e-3, gamma=[0.01], g=[0.1])
+        self.assertFalse(zero)
+        self.assertIn("1 of 1 point(s) fail", zero.reason)
+        cells = viscor.compare(lambda ga, g: 0 * ga, "kuwabara_kono", 1e-3, region=(0, 1e-3, 0, 10))
+        self.assertFalse(cells)
+        self.assertIn("cell(s) fail", cells.reason)
+
+    def test_a_check_that_judged_nothing_is_false_and_says_why(self):
+        none = viscor.compare(accurate, "kuwabara_kono", 1e-3, region=(0.3, 0.4, None, None))  # between two edges
+        self.assertFalse(none)
+        self.assertEqual(none.coverage.cells_judged, 0)
+        self.assertIn("no cell judged: the region holds no cell of the map", none.reason)
+        self.assertIn("no cell judged", str(none))
+        no_points = viscor.compare(lambda ga, g: ga, "kuwabara_kono", 1e-3, gamma=[], g=[])
+        self.assertFalse(no_points)
+        self.assertIn("no point judged", no_points.reason)
+
+    def test_region_bounds_and_tolerances_as_the_cli_refuses_them(self):
+        for bound in (float("nan"), float("inf"), "0x10", "1e-400", "nan"):
+            with self.subTest(bound=bound):
+                with self.assertRaisesRegex(viscor.InvalidParameter, "gamma_max"):
+                    viscor.compare(accurate, "kuwabara_kono", 1e-3, region=(0, bound, 0, 10))
+        with self.assertRaisesRegex(viscor.InvalidParameter, "the region is empty: gamma_min = 0.01 is not below"):
+            viscor.compare(accurate, "kuwabara_kono", 1e-3, region=(0.01, 0.001, 0, 10))
+        for tol in (1, 2.5, -1e-3, "1e-400", float("nan")):
+            with self.subTest(tol=tol):
+                with self.assertRaisesRegex(viscor.InvalidParameter, "tolerance"):
+                    viscor.compare(accurate, "kuwabara_kono", tol, region=(0, 1e-3, 0, 10))
+                with self.assertRaisesRegex(viscor.InvalidParameter, "tolerance"):
+                    viscor.compare(accurate, "kuwabara_kono", tol, gamma=[0.01], g=[0.1])
 
     def test_bad_calls(self):
         with self.assertRaises(TypeError):

@@ -70,7 +70,7 @@ class TwoMaterials(unittest.TestCase):
         r = viscor.dem("lammps", **options)
         cli = cli_json("dem", "lammps", *words(options))
         self.assertEqual(without_seconds(r.to_dict()), without_seconds(cli))
-        self.assertIn("pair_coeff 1 2 hertz/material " + r.deck["cross_youngs_modulus"], r.snippet)
+        self.assertIn("pair_coeff 1 2 hertz/material " + r.deck.exact("cross_youngs_modulus"), r.snippet)
 
 
 if __name__ == "__main__":

@@ -20,13 +20,17 @@
 #include <viscor/scenes/error_map.hpp>
 #include <viscor/scenes/formula_check.hpp>
 
+#include <algorithm>
 #include <filesystem>
+#include <iostream>
 #include <map>
 #include <set>
 #include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
+
+#include <sys/stat.h>
 
 namespace viscor::jobs {
 
@@ -85,7 +89,13 @@ inline formula_reference committed_formula_reference(const contact_law& law, con
   r.grid.gamma_edges = detail::split_commas(detail::option_value(command, "--gamma-edges"));
   r.grid.g_edges = detail::split_commas(detail::option_value(command, "--g-edges"));
   const std::string min_samples = detail::option_value(command, "--min-samples");
-  if (!min_samples.empty()) r.grid.min_samples = std::stoi(min_samples);
+  if (!min_samples.empty()) {
+    if (min_samples.size() > 6 || min_samples.find_first_not_of("0123456789") != std::string::npos ||
+        std::stoi(min_samples) < 1)
+      throw parse_error(map_path.string() + ": its command line gives --min-samples '" + min_samples.substr(0, 40) +
+                        "', not a whole number from 1 to 999999");
+    r.grid.min_samples = std::stoi(min_samples);
+  }
   if (r.grid.gamma_edges.size() < 2 || r.grid.g_edges.size() < 2)
     throw parse_error(map_path.string() + ": its command line records no --gamma-edges and --g-edges");
   r.points = reference_from_tables(law, r.tables);
@@ -109,9 +119,41 @@ struct formula_values {
   std::map<std::pair<double, double>, double> at;  ///< (gamma, g) -> value
 };
 
-/// Reads a values file; refuses a missing or repeated column and any field that is not a number, naming the line.
+namespace detail {
+
+// At most the first 60 bytes of `text`, for messages that quote what a file holds.
+inline std::string quoted_start(const std::string& text) {
+  return "'" + (text.size() > 60 ? text.substr(0, 60) + "...'" : text + "'");
+}
+
+// The text of a values file ("-": standard input); refuses what is not UTF-8 text, naming where.
+inline std::string read_values_text(const std::string& path) {
+  std::string text;
+  if (path == "-") {
+    std::ostringstream s;
+    s << std::cin.rdbuf();
+    text = s.str();
+  } else {
+    struct stat st {};
+    if (::stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode))
+      throw invalid_parameter("formula check: the values file '" + path + "' is not a regular file");
+    text = read_file(path);
+  }
+  const std::string name = path == "-" ? "<stdin>" : path;
+  const std::size_t bad = first_invalid_utf8(text);
+  if (bad != std::string::npos)
+    throw parse_error(name + ":" + std::to_string(1 + std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(bad), '\n')) +
+                      ": not UTF-8 text (byte " + std::to_string(bad) + "); the values are a CSV with the header gamma,g,e");
+  return text;
+}
+
+}  // namespace detail
+
+/// Reads a values file ("-": standard input); refuses text that is not UTF-8, a
+/// missing or repeated column and any field that is not a number, naming the line.
 inline formula_values read_formula_values(const std::string& path) {
-  std::istringstream in(read_file(path));
+  std::istringstream in(detail::read_values_text(path));
+  const std::string name = path == "-" ? "<stdin>" : path;
   formula_values v;
   std::vector<std::string> header;
   int gamma_col = -1, g_col = -1, value_col = -1;
@@ -121,7 +163,7 @@ inline formula_values read_formula_values(const std::string& path) {
     if (!line.empty() && line.back() == '\r') line.pop_back();
     if (line.empty() || line[0] == '#') continue;
     const std::vector<std::string> fields = detail::split_commas(line);
-    const std::string where = path + ":" + std::to_string(line_number) + ": ";
+    const std::string where = name + ":" + std::to_string(line_number) + ": ";
     if (header.empty()) {
       header = fields;
       for (int k = 0; k < static_cast<int>(fields.size()); ++k) {
@@ -130,23 +172,30 @@ inline formula_values read_formula_values(const std::string& path) {
                     : fields[k] == "e" || fields[k] == "one_minus_e" ? &value_col
                                                                       : nullptr;
         if (!slot) continue;
-        if (*slot >= 0) throw parse_error(where + "column '" + fields[k] + "' given twice (or both e and one_minus_e)");
+        if (*slot >= 0)
+          throw parse_error(where + "column " + detail::quoted_start(fields[k]) + " given twice (or both e and one_minus_e)");
         *slot = k;
         if (fields[k] == "one_minus_e") v.quantity = formula_quantity::one_minus_e;
       }
       if (gamma_col < 0 || g_col < 0 || value_col < 0)
-        throw parse_error(where + "the header needs the columns gamma, g and e (or one_minus_e), got '" + line + "'");
+        throw parse_error(where + "the header needs the columns gamma, g and e (or one_minus_e), got " +
+                          detail::quoted_start(line));
       continue;
     }
     if (fields.size() != header.size())
       throw parse_error(where + std::to_string(fields.size()) + " fields, the header has " + std::to_string(header.size()));
-    const double gamma = parse_real<double>(fields[gamma_col], "gamma (" + where + ")");
-    const double g = parse_real<double>(fields[g_col], "g (" + where + ")");
-    const double value = parse_real<double>(fields[value_col], header[value_col] + " (" + where + ")");
+    const auto number_at = [&](int col, const std::string& what) {
+      if (fields[col].size() > 100)
+        throw parse_error(where + what + " is not a number: " + detail::quoted_start(fields[col]));
+      return parse_real<double>(fields[col], what + " (" + where + ")");
+    };
+    const double gamma = number_at(gamma_col, "gamma");
+    const double g = number_at(g_col, "g");
+    const double value = number_at(value_col, header[value_col]);
     if (!v.at.emplace(std::make_pair(gamma, g), value).second)
       throw parse_error(where + "the point gamma = " + fields[gamma_col] + ", g = " + fields[g_col] + " is given twice");
   }
-  if (header.empty()) throw parse_error(path + ": no header and no values");
+  if (header.empty()) throw parse_error(name + ": no header and no values (formula check needs gamma,g,e)");
   return v;
 }
 
@@ -172,6 +221,48 @@ inline std::vector<double> values_at_reference(formula_reference& r, const formu
                               r.law.name + " (`viscor formula points --model " + r.law.name + "` lists them)");
   r.points = std::move(kept);
   return values;
+}
+
+/// The region of a check from its bounds as text ("" for an unbounded side), through
+/// the one number parser: NaN, infinities, hexadecimal and underflowing bounds are
+/// refused naming the bound, and so is an empty or inverted region.
+inline formula_region formula_region_of(const std::string& gamma_min, const std::string& gamma_max,
+                                        const std::string& g_min, const std::string& g_max) {
+  formula_region r;
+  const auto bound = [](const std::string& text, const char* name, double& slot) {
+    if (!text.empty()) slot = parse_real<double>(text, name);
+  };
+  bound(gamma_min, "gamma_min", r.gamma_min);
+  bound(gamma_max, "gamma_max", r.gamma_max);
+  bound(g_min, "g_min", r.g_min);
+  bound(g_max, "g_max", r.g_max);
+  r.validate();
+  return r;
+}
+
+/// The tolerance on |de| from text, through the one number parser, in [0, 1).
+inline double formula_tolerance_of(const std::string& text) {
+  const double t = parse_real<double>(text, "tolerance");
+  validate_formula_tolerance(t);
+  return t;
+}
+
+/// What a check covered: "12 of 40 cells in the region judged; 3 points in no judged
+/// cell (largest |de| 2.1e-03)".
+inline std::string formula_coverage_text(const formula_comparison& c) {
+  std::string t = std::to_string(c.cells.size()) + " of " + std::to_string(c.cells_in_region) +
+                  " cells in the region judged; " + std::to_string(c.points_not_judged) + " points in no judged cell";
+  if (c.points_not_judged) t += " (largest |de| " + to_decimal_string(c.max_abs_e_not_judged, 3) + ")";
+  return t;
+}
+
+/// Why a check judged no cell (empty when it judged one): `given` points had a value.
+inline std::string formula_nothing_judged(const formula_comparison& c, const formula_reference& r) {
+  if (c.judged_any()) return {};
+  if (c.cells_in_region == 0) return "the region holds no cell of the map";
+  return "none of the " + std::to_string(c.cells_in_region) + " cells in the region has its four corners and " +
+         std::to_string(r.grid.min_samples) + " samples among the " + std::to_string(r.points.size()) +
+         " certified points with a value";
 }
 
 /// The statistics of one cell (or all cells), as JSON.
@@ -208,6 +299,10 @@ inline json formula_comparison_json(const formula_comparison& c, const formula_r
   j["points"] = r.points.size();
   j["pass"] = c.pass;
   j["failed_cells"] = c.failed_cells;
+  j["coverage"] = {{"cells_judged", c.cells.size()}, {"cells_in_region", c.cells_in_region},
+                   {"points_not_judged", c.points_not_judged},
+                   {"max_abs_e_not_judged", number(c.max_abs_e_not_judged)}};
+  if (!c.judged_any()) j["reason"] = "no cell judged: " + formula_nothing_judged(c, r);
   j["overall"] = formula_cell_json(c.overall, r.points);
   j["cells"] = json::array();
   for (const auto& cell : c.cells) j["cells"].push_back(formula_cell_json(cell, r.points));
@@ -221,9 +316,11 @@ inline std::string formula_comparison_text(const formula_comparison& c, const fo
   t << "law        " << r.law.describe() << "\n"
     << "truth      " << r.points.size() << " certified points of " << r.tables.size() << " tables, "
     << c.cells.size() << " cells\n"
+    << "coverage   " << formula_coverage_text(c) << "\n"
     << "verdict    " << (c.pass ? "pass" : "FAIL") << " (|de| <= " << to_decimal_string(c.tolerance, 3)
     << " in every cell, outcomes right)";
-  if (!c.pass) t << ": " << c.failed_cells << " cell(s) fail";
+  if (!c.judged_any()) t << ": no cell judged: " << formula_nothing_judged(c, r);
+  else if (!c.pass) t << ": " << c.failed_cells << " cell(s) fail";
   t << "\nmax |de|   " << to_decimal_string(a.max_abs_e, 3) << " (median " << to_decimal_string(a.median_abs_e, 3)
     << ")\nmax rel    " << to_decimal_string(a.max_rel_one_minus_e, 3) << " on 1 - e (median "
     << to_decimal_string(a.median_rel_one_minus_e, 3) << ")\n";

@@ -32,7 +32,8 @@ namespace viscor {
 /// What the caller's values are: e itself, or 1 - e (more digits near e = 1).
 enum class formula_quantity { e, one_minus_e };
 
-/// The part of the (gamma, g) plane a check covers: cells wholly inside it.
+/// The part of the (gamma, g) plane a check covers: cells wholly inside it. An
+/// unbounded side is infinite; a bound a caller gives is finite (formula_region_of).
 struct formula_region {
   double gamma_min = 0, gamma_max = std::numeric_limits<double>::infinity();
   double g_min = -std::numeric_limits<double>::infinity(), g_max = std::numeric_limits<double>::infinity();
@@ -41,7 +42,31 @@ struct formula_region {
   bool contains(double gamma_lo, double gamma_hi, double g_lo, double g_hi) const {
     return gamma_min <= gamma_lo && gamma_hi <= gamma_max && g_min <= g_lo && g_hi <= g_max;
   }
+  /// Whether the point (gamma, g) lies inside.
+  bool contains(double gamma, double g) const { return contains(gamma, gamma, g, g); }
+
+  /// Refuses a NaN bound and an empty or inverted region (min >= max), naming the bounds:
+  /// a check over such a region could judge nothing.
+  void validate() const {
+    const auto check = [](double lo, double hi, const char* lo_name, const char* hi_name) {
+      if (std::isnan(lo) || std::isnan(hi))
+        throw invalid_parameter(std::string("formula check: the region bound ") + (std::isnan(lo) ? lo_name : hi_name) +
+                                " is not a number");
+      if (!(lo < hi))
+        throw invalid_parameter(std::string("formula check: the region is empty: ") + lo_name + " = " +
+                                detail::shortest(lo) + " is not below " + hi_name + " = " + detail::shortest(hi));
+    };
+    check(gamma_min, gamma_max, "gamma_min", "gamma_max");
+    check(g_min, g_max, "g_min", "g_max");
+  }
 };
+
+/// Refuses a tolerance on |de| outside [0, 1) (e lies in [0, 1]: a tolerance of 1
+/// passes every formula), naming it.
+inline void validate_formula_tolerance(double tolerance) {
+  if (!(tolerance >= 0 && tolerance < 1))
+    throw invalid_parameter("formula check: the tolerance must be in [0, 1), got " + detail::shortest(tolerance));
+}
 
 /// The worst point of a cell (or of the whole check) for |de|.
 struct formula_worst_point {
@@ -65,13 +90,20 @@ struct formula_cell {
   bool pass = true;  ///< max_abs_e <= tolerance (not judged in mixed cells), no mismatch, all finite
 };
 
-/// The check of one formula: per cell, and over all cells.
+/// The check of one formula: per cell, and over all cells. A check that judged no
+/// cell does not pass: a verdict over nothing is no verdict.
 struct formula_comparison {
   double tolerance = 0;            ///< on |de|
-  std::vector<formula_cell> cells;
+  std::vector<formula_cell> cells; ///< the judged cells (corners and min_samples given)
   formula_cell overall;            ///< every judged sample together (edges empty)
-  bool pass = true;                ///< every cell passes
+  bool pass = false;               ///< at least one cell judged, and every judged cell passes
   std::size_t failed_cells = 0;
+  std::size_t cells_in_region = 0;     ///< cells of the grid wholly inside the region, judged or not
+  std::size_t points_not_judged = 0;   ///< points inside the region that are samples of no judged cell
+  double max_abs_e_not_judged = 0;     ///< their largest |de| (NaN when one is not finite)
+
+  /// Whether any cell was judged.
+  bool judged_any() const { return !cells.empty(); }
 };
 
 namespace detail {
@@ -132,7 +164,8 @@ inline formula_comparison compare_formula_values(const std::vector<reference_poi
   if (values.size() != points.size())
     throw invalid_parameter("formula check: " + std::to_string(values.size()) + " values for " +
                             std::to_string(points.size()) + " reference points");
-  if (!(tolerance >= 0)) throw invalid_parameter("formula check: the tolerance must be >= 0");
+  validate_formula_tolerance(tolerance);
+  region.validate();
   const std::vector<double> gx = detail::parse_edges(spec.gamma_edges, "gamma_edges");
   const std::vector<double> gy = detail::parse_edges(spec.g_edges, "g_edges");
   const std::vector<reference_sample> s = reference_samples(points);
@@ -141,9 +174,13 @@ inline formula_comparison compare_formula_values(const std::vector<reference_poi
 
   formula_comparison out;
   out.tolerance = tolerance;
+  for (std::size_t i = 0; i + 1 < gx.size(); ++i)
+    for (std::size_t j = 0; j + 1 < gy.size(); ++j) out.cells_in_region += region.contains(gx[i], gx[i + 1], gy[j], gy[j + 1]);
+  std::vector<bool> judged(points.size(), false);
   detail::formula_accumulator all;
   for (const mappable_cell& m : mappable_cells(s, gx, gy, spec.min_samples)) {
     if (!region.contains(gx[m.i], gx[m.i + 1], gy[m.j], gy[m.j + 1])) continue;
+    for (const reference_sample* p : m.samples) judged[p->index] = true;
     detail::formula_accumulator cell;
     cell.c.gamma_lo = spec.gamma_edges[m.i], cell.c.gamma_hi = spec.gamma_edges[m.i + 1];
     cell.c.g_lo = spec.g_edges[m.j], cell.c.g_hi = spec.g_edges[m.j + 1];
@@ -157,7 +194,15 @@ inline formula_comparison compare_formula_values(const std::vector<reference_poi
     if (!out.cells.back().pass) ++out.failed_cells;
   }
   out.overall = all.finish(tolerance);
-  out.pass = out.failed_cells == 0;
+  for (const reference_sample& p : s) {
+    if (judged[p.index] || !region.contains(p.gamma, p.g)) continue;
+    ++out.points_not_judged;
+    const double err = std::abs(e_of(p.index) - p.e);
+    out.max_abs_e_not_judged = std::isnan(err) || std::isnan(out.max_abs_e_not_judged)
+                                   ? std::numeric_limits<double>::quiet_NaN()
+                                   : std::max(out.max_abs_e_not_judged, err);
+  }
+  out.pass = out.judged_any() && out.failed_cells == 0;
   return out;
 }
 
