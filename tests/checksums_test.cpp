@@ -15,6 +15,8 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <sys/stat.h>
+#include <unistd.h>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -113,13 +115,29 @@ TEST(Checksums, CliRefusesAChangedCommittedSurrogate) {
   EXPECT_NE(r.err.find("kuwabara_kono.surrogate: content does not match its SHA-256"), std::string::npos) << r.err;
 }
 
-TEST(Checksums, WritesKeepAListedLineTrue) {
+// Allows replacing committed data for one scope (the CLI's --update-committed).
+struct committed_data_replaceable {
+  committed_data_replaceable() { viscor::jobs::replacing_committed_data_allowed() = true; }
+  ~committed_data_replaceable() { viscor::jobs::replacing_committed_data_allowed() = false; }
+};
+
+TEST(Checksums, ListedFilesAreReplacedOnlyWhenAskedAndThenKeepTheirLineTrue) {
   scratch_dir s{"viscor_checksums"};
   const fs::path file = s.path / "a.csv", other = s.path / "b.csv", manifest = s.path / viscor::checksum_manifest_name;
   viscor::jobs::write_atomically(file.string(), "first\n");
   viscor::jobs::write_atomically(other.string(), "other\n");
   EXPECT_FALSE(fs::exists(manifest));  // no manifest: none is made
   std::ofstream(manifest) << viscor::sha256_hex("first\n") << "  a.csv\n";
+  // An ordinary write over a listed file is refused: the file and its checksum stay.
+  try {
+    viscor::jobs::write_atomically(file.string(), "second\n");
+    ADD_FAILURE() << "a listed file was replaced";
+  } catch (const viscor::invalid_parameter& e) {
+    EXPECT_NE(std::string(e.what()).find("is committed data listed in"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(slurp(file), "first\n");
+  EXPECT_EQ(slurp(manifest), viscor::sha256_hex("first\n") + "  a.csv\n");
+  const committed_data_replaceable asked;
   viscor::jobs::write_atomically(file.string(), "second\n");
   EXPECT_EQ(slurp(manifest), viscor::sha256_hex("second\n") + "  a.csv\n");
   EXPECT_NO_THROW(viscor::verify_checksum(file.string(), "second\n"));
@@ -127,6 +145,89 @@ TEST(Checksums, WritesKeepAListedLineTrue) {
   EXPECT_EQ(slurp(manifest), viscor::sha256_hex("second\n") + "  a.csv\n");
   // the known SHA-256 of "abc" (FIPS 180-2, appendix B.1), so the digest itself is right
   EXPECT_EQ(viscor::sha256_hex("abc"), "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
+}
+
+// The manifest is read as sha256sum writes it on any platform, or refused naming the line.
+TEST(Checksums, ManifestsAreReadCorrectlyOrRefusedNeverIgnored) {
+  scratch_dir s{"viscor_checksums"};
+  const fs::path file = s.path / "a.csv", manifest = s.path / viscor::checksum_manifest_name;
+  std::ofstream(file) << "value\n";
+  const std::string hash = viscor::sha256_hex("value\n"), wrong = viscor::sha256_hex("other\n");
+  for (const std::string& line : {hash + "  a.csv\r\n", hash + "  ./a.csv\n", hash + " *a.csv\n"}) {
+    std::ofstream(manifest, std::ios::binary) << line;
+    EXPECT_TRUE(viscor::listed_in_checksum_manifest(file)) << line;
+    EXPECT_NO_THROW(viscor::verify_checksum(file.string(), "value\n")) << line;
+  }
+  for (const std::string& line : {wrong + "  a.csv\r\n", wrong + "  ./a.csv\n", wrong + " *a.csv\n"}) {
+    std::ofstream(manifest, std::ios::binary) << line;
+    EXPECT_THROW(viscor::verify_checksum(file.string(), "value\n"), viscor::parse_error) << line;  // not ignored
+  }
+  for (const std::string& line : {hash + "  sub/a.csv\n", hash + "  ../a.csv\n", hash + "  ./\n",
+                                  hash + "  a.csv\n" + wrong + "  ./a.csv\n", hash + "\ta.csv\n"}) {
+    std::ofstream(manifest, std::ios::binary) << line;
+    EXPECT_THROW(viscor::read_checksum_manifest(file), viscor::parse_error) << line;
+  }
+}
+
+// The manifest's temporary file is created exclusively: a symbolic link planted at its name
+// is not followed (the write fails and the file it points to is untouched).
+TEST(Checksums, ThePlantedTemporaryOfAManifestIsNotFollowed) {
+  scratch_dir s{"viscor_checksums"}, outside{"viscor_outside"};
+  const fs::path file = s.path / "a.csv", manifest = s.path / viscor::checksum_manifest_name;
+  const fs::path victim = outside.path / "victim.txt";
+  std::ofstream(victim) << "keep me\n";
+  std::ofstream(file) << "first\n";
+  std::ofstream(manifest) << viscor::sha256_hex("first\n") << "  a.csv\n";
+  fs::create_symlink(victim, manifest.string() + ".tmp");
+  fs::create_symlink(victim, manifest.string() + ".tmp." + std::to_string(::getpid()));
+  EXPECT_THROW(viscor::update_checksum(file.string(), "second\n"), viscor::error);
+  EXPECT_EQ(slurp(victim), "keep me\n");
+  EXPECT_EQ(slurp(manifest), viscor::sha256_hex("first\n") + "  a.csv\n");
+}
+
+// A deck or block viscor may replace carries a seal; the name, the first line or a FIFO is no proof.
+TEST(Checksums, OnlyAnUneditedSealedFileCountsAsViscors) {
+  scratch_dir s{"viscor_sealed"};
+  const std::string marker = "# viscor dem variables";
+  const fs::path own = s.path / "own.in", edited = s.path / "edited.in", marker_only = s.path / "marker.in";
+  const fs::path big = s.path / "big.in", fifo = s.path / "fifo.in";
+  const std::string body = marker + ": test\nvariable x string 1\n";
+  std::ofstream(own, std::ios::binary) << viscor::jobs::sealed(body);
+  EXPECT_TRUE(viscor::jobs::is_unedited_viscor_file(own.string(), marker));
+  std::string text = viscor::jobs::sealed(body);
+  text.replace(text.find("string 1"), 8, "string 2");
+  std::ofstream(edited, std::ios::binary) << text;
+  EXPECT_FALSE(viscor::jobs::is_unedited_viscor_file(edited.string(), marker));
+  std::ofstream(marker_only, std::ios::binary) << body;
+  EXPECT_FALSE(viscor::jobs::is_unedited_viscor_file(marker_only.string(), marker));
+  std::ofstream(big, std::ios::binary) << viscor::jobs::sealed(body + std::string(2 << 20, '#') + "\n");
+  EXPECT_FALSE(viscor::jobs::is_unedited_viscor_file(big.string(), marker));  // not read: too large to be ours
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  EXPECT_FALSE(viscor::jobs::is_unedited_viscor_file(fifo.string(), marker));  // returns at once, no hang
+  EXPECT_THROW(viscor::jobs::refuse_unless_own_or_absent(fifo.string(), marker, "--variables", "a variable block"),
+               viscor::invalid_parameter);
+  EXPECT_NO_THROW(viscor::jobs::refuse_unless_own_or_absent(own.string(), marker, "--variables", "a variable block"));
+  EXPECT_NO_THROW(viscor::jobs::refuse_unless_own_or_absent((s.path / "new.in").string(), marker, "--variables", "x"));
+  EXPECT_EQ(viscor::jobs::sealed("no line end").rfind("no line end\n# viscor sha256 ", 0), 0u);
+}
+
+// `cor -o` over a committed table: refused before any work, the table and the manifest untouched;
+// viscor --update-committed replaces it and keeps its line true.
+TEST(Checksums, TheCliReplacesCommittedDataOnlyWithUpdateCommitted) {
+  if (std::string(VISCOR_CLI_PATH).empty()) GTEST_SKIP() << "viscor CLI not built";
+  scratch_dir s{"viscor_committed"};
+  const fs::path table = s.path / "cor_report_grid.csv", manifest = s.path / viscor::checksum_manifest_name;
+  std::ofstream(table) << "law,gamma\n";
+  std::ofstream(manifest) << viscor::sha256_hex("law,gamma\n") << "  cor_report_grid.csv\n";
+  const std::string cor = " cor --model linear --gamma 0.1 --digits 20 -o " + table.string();
+  const auto refused = viscor::test::run_cli(cor);
+  EXPECT_EQ(refused.status, 2);
+  EXPECT_NE(refused.err.find("is committed data"), std::string::npos) << refused.err;
+  EXPECT_EQ(slurp(table), "law,gamma\n");
+  EXPECT_EQ(slurp(manifest), viscor::sha256_hex("law,gamma\n") + "  cor_report_grid.csv\n");
+  const auto asked = viscor::test::run_cli("--update-committed" + cor);
+  EXPECT_EQ(asked.status, 0) << asked.err;
+  EXPECT_EQ(slurp(manifest), viscor::sha256_hex(slurp(table)) + "  cor_report_grid.csv\n");
 }
 
 }  // namespace

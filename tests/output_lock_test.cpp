@@ -38,6 +38,24 @@ TEST(OutputLock, SecondWriterStopsWithAMessage) {
   EXPECT_FALSE(std::filesystem::exists(out + ".lock"));
 }
 
+// A lock file that was there before (a user's, or a killed run's) is taken but never removed:
+// viscor deletes only the lock file it created.
+TEST(OutputLock, ALockFileItDidNotCreateIsLeftInPlace) {
+  scratch_dir s{"viscor_lock"};
+  const std::string out = (s.path / "t.csv").string();
+  std::ofstream(out + ".lock") << "someone's file\n";
+  { const viscor::jobs::output_lock held(out); }
+  ASSERT_TRUE(std::filesystem::exists(out + ".lock"));
+  std::ifstream in(out + ".lock");
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line, "someone's file");
+  { const viscor::jobs::output_lock again(out); }  // and it still locks
+  std::filesystem::remove(out + ".lock");
+  { const viscor::jobs::output_lock own(out); }
+  EXPECT_FALSE(std::filesystem::exists(out + ".lock"));  // its own is removed
+}
+
 TEST(OutputLock, TwoLocksInOneProcessExcludeEachOther) {
   scratch_dir s{"viscor_lock"};
   const std::string out = (s.path / "t.csv").string();

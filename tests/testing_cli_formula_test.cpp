@@ -46,6 +46,13 @@ std::string values_file(const std::string& name, double (*formula)(double, doubl
   return path;
 }
 
+// Writes `text` to the file `name` in the test's temporary directory; returns its path.
+std::string write_values(const std::string& name, const std::string& text) {
+  const std::string path = ::testing::TempDir() + name;
+  std::ofstream(path) << text;
+  return path;
+}
+
 double wrong_in_one_cell(double gamma, double g) {
   return prop2_numeric(gamma, g) + (1e-4 <= gamma && gamma <= 2e-4 && 0.01 <= g && g <= 0.1 ? 1e-3 : 0);
 }
@@ -72,36 +79,31 @@ TEST(CliFormula, CheckGivesTheLibrarysStatisticsAndExitCodes) {
 
 TEST(CliFormula, BadValuesFilesAreRefusedNamingTheProblem) {
   if (!cli_built()) GTEST_SKIP() << "viscor CLI not built";
-  const std::string dir = ::testing::TempDir();
-  auto write = [&](const std::string& name, const std::string& text) {
-    std::ofstream(dir + name) << text;
-    return dir + name;
-  };
   const auto unknown = run_cli("formula check --model kuwabara_kono --tolerance 1e-3 --values " +
-                               write("unknown.csv", "gamma,g,e\n0.123456,0.5,0.9\n"));
+                               write_values("unknown.csv", "gamma,g,e\n0.123456,0.5,0.9\n"));
   EXPECT_EQ(unknown.status, 2);
   EXPECT_NE(unknown.err.find("gamma = 0.123456"), std::string::npos) << unknown.err;
   const auto no_value = run_cli("formula check --model kuwabara_kono --tolerance 1e-3 --values " +
-                                write("no_value.csv", "gamma,g\n0.1,0.5\n"));
+                                write_values("no_value.csv", "gamma,g\n0.1,0.5\n"));
   EXPECT_EQ(no_value.status, 2);
   EXPECT_NE(no_value.err.find("e (or one_minus_e)"), std::string::npos) << no_value.err;
   const auto twice = run_cli("formula check --model kuwabara_kono --tolerance 1e-3 --values " +
-                             write("twice.csv", "gamma,g,e,e\n0.1,0.5,0.9,0.9\n"));
+                             write_values("twice.csv", "gamma,g,e,e\n0.1,0.5,0.9,0.9\n"));
   EXPECT_EQ(twice.status, 2);
   EXPECT_NE(twice.err.find("given twice"), std::string::npos) << twice.err;
   const auto text = run_cli("formula check --model kuwabara_kono --tolerance 1e-3 --values " +
-                            write("text.csv", "gamma,g,e\n0.1,0.5,abc\n"));
+                            write_values("text.csv", "gamma,g,e\n0.1,0.5,abc\n"));
   EXPECT_EQ(text.status, 2);
   EXPECT_NE(text.err.find("abc"), std::string::npos) << text.err;
   const auto linear_law = run_cli("formula points --alpha 1 --beta 1");
   EXPECT_EQ(linear_law.status, 2);
   const auto not_utf8 = run_cli("formula check --model kuwabara_kono --tolerance 1e-3 --values " +
-                                write("latin1.csv", "gamma,g,e\n0.1,0.5,0.9\n# caf\xe9\n"));
+                                write_values("latin1.csv", "gamma,g,e\n0.1,0.5,0.9\n# caf\xe9\n"));
   EXPECT_EQ(not_utf8.status, 2);
   EXPECT_NE(not_utf8.err.find("latin1.csv:3: not UTF-8"), std::string::npos) << not_utf8.err;
   const std::string long_field(5000, '7');
   const auto huge = run_cli("formula check --model kuwabara_kono --tolerance 1e-3 --values " +
-                            write("huge.csv", "gamma,g,e\n0.1,0.5," + long_field + "x\n"));
+                            write_values("huge.csv", "gamma,g,e\n0.1,0.5," + long_field + "x\n"));
   EXPECT_EQ(huge.status, 2);
   EXPECT_LT(huge.err.size(), 400u) << "the message quotes the start of the field only";
 }
@@ -110,22 +112,17 @@ TEST(CliFormula, BadValuesFilesAreRefusedNamingTheProblem) {
 // region bounds and tolerances go through the one number parser.
 TEST(CliFormula, ACheckThatJudgesNothingIsRefused) {
   if (!cli_built()) GTEST_SKIP() << "viscor CLI not built";
-  const std::string dir = ::testing::TempDir();
-  auto write = [&](const std::string& name, const std::string& text) {
-    std::ofstream(dir + name) << text;
-    return dir + name;
-  };
-  const std::string out = dir + "nothing_judged.json";
+  const std::string out = ::testing::TempDir() + "nothing_judged.json";
   std::remove(out.c_str());
   const auto header_only = run_cli("formula check --model kuwabara_kono --tolerance 1e-3 -o " + out + " --values " +
-                                   write("header_only.csv", "gamma,g,e\n"));
+                                   write_values("header_only.csv", "gamma,g,e\n"));
   EXPECT_EQ(header_only.status, 2);
   EXPECT_NE(header_only.err.find("judged no cell"), std::string::npos) << header_only.err;
   EXPECT_NE(header_only.err.find("0 of 108 cells in the region judged"), std::string::npos) << header_only.err;
   EXPECT_FALSE(std::ifstream(out).good()) << "no output for a check that judged nothing";
   // Four certified points, each right, no two cells' corners among them: nothing judged.
   // (Four that are the corners of one cell judge that cell: "1 of 108 cells".)
-  const std::string four = write("four.csv", "gamma,g,e\n" + [] {
+  const std::string four = write_values("four.csv", "gamma,g,e\n" + [] {
     std::string rows;
     for (const char* point : {"1e-6,0", "2e-6,1e-4", "5e-6,0", "1e-5,1e-4"}) {
       const auto comma = std::string(point).find(',');

@@ -17,6 +17,6 @@ for t in reference_data/cor_error_map_grid.csv reference_data/cor_report_grid.cs
   tables+=(--table "$t")
 done
 for law in linear hertz_linear_damping tsuji kuwabara_kono hunt_crossley; do
-  "$viscor" errormap --model "$law" "${tables[@]}" --gamma-edges "$gamma_edges" --g-edges "$g_edges" \
+  "$viscor" --update-committed errormap --model "$law" "${tables[@]}" --gamma-edges "$gamma_edges" --g-edges "$g_edges" \
     --safety-factor 4 --floor 1e-14 -o "reference_data/error_maps/$law.csv"
 done

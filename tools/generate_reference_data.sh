@@ -11,8 +11,8 @@ for spec in reference_data/cor_report_grid.json reference_data/cor_report_g10_*.
             reference_data/cor_gamma_sweep.json reference_data/cor_g_sweep.json \
             reference_data/cor_error_map_grid.json; do
   echo "== $spec"
-  "$viscor" table "$spec" -o "${spec%.json}.csv" --threads "$threads" --resume
+  "$viscor" --update-committed table "$spec" -o "${spec%.json}.csv" --threads "$threads" --resume
 done
 echo "== reference_data/sticking_hertz.json"
-"$viscor" table sticking reference_data/sticking_hertz.json -o reference_data/sticking_hertz.csv \
+"$viscor" --update-committed table sticking reference_data/sticking_hertz.json -o reference_data/sticking_hertz.csv \
   --threads "$threads" --resume

@@ -9,7 +9,8 @@ import re
 _NUMBER = re.compile(r"[+-]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][+-]?[0-9]+)?|[+-]?(?:inf|nan)")
 # Fields whose text is not a quantity: law exponents are exact fractions ("3/2", "1"),
 # versions and commits are names.
-_TEXT_FIELDS = frozenset({"name", "alpha", "beta", "version", "commit", "git_commit", "viscor", "source", "line"})
+_TEXT_FIELDS = frozenset({"name", "alpha", "beta", "version", "viscor_version", "commit", "git_commit", "source", "line",
+                          "description", "table", "spec_file", "command"})
 _EXACT_SUFFIX = "_exact"
 
 

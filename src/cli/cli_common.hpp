@@ -92,12 +92,14 @@ struct output_options {
   }
 
   /// A CLI11 check of an output option: refuses, before any work, a path that
-  /// exists and is not a regular file (write_atomically checks again when writing).
+  /// exists and is not a regular file, and committed data unless --update-committed
+  /// (write_atomically checks both again when writing).
   static CLI::Validator regular_output_file() {
     return CLI::Validator(
         [](std::string& value) {
           try {
             refuse_unless_regular_or_absent(value);
+            jobs::refuse_committed_unless_allowed(value);  // viscor --update-committed comes before the subcommand
           } catch (const error& e) {
             return std::string(e.what());
           }

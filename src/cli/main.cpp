@@ -5,6 +5,7 @@
 
 #include <viscor/config.hpp>
 #include <viscor/core/exceptions.hpp>
+#include <viscor/jobs/files.hpp>
 
 #include <cstdio>
 #include <iostream>
@@ -25,6 +26,10 @@ int main(int argc, char** argv) {
   CLI::App app{"viscor: certified coefficient of restitution of visco-elastic impacts under load"};
   app.set_version_flag("--version", std::string("viscor ") + VISCOR_VERSION + " (" + viscor::git_commit() + ")");
   app.require_subcommand(1);
+  app.add_flag_callback(
+      "--update-committed", [] { viscor::jobs::replacing_committed_data_allowed() = true; },
+      "allow outputs to replace committed data (a file a SHA256SUMS beside it lists) and update its checksum line; "
+      "give it before the subcommand");
   viscor::cli::add_commands(app);  // every subcommand; empty values refused
   try {
     viscor::cli::refuse_empty_assignments(argc, argv);

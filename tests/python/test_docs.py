@@ -17,21 +17,19 @@ def markdown_doctest(page):
 
 
 class DocsShowWhatTheModuleReturns(unittest.TestCase):
-    def test_python_md(self):
-        test = markdown_doctest(os.path.join(SOURCE_DIR, "docs", "python.md"))
+    def check_page(self, name, at_least):
+        test = markdown_doctest(os.path.join(SOURCE_DIR, "docs", name))
         runner = doctest.DocTestRunner(optionflags=doctest.ELLIPSIS)
         runner.run(test)
         result = runner.summarize(verbose=False)
-        self.assertGreaterEqual(result.attempted, 15, "docs/python.md lost its >>> examples")
-        self.assertEqual(result.failed, 0, "docs/python.md shows values the module does not return (see above)")
+        self.assertGreaterEqual(result.attempted, at_least, f"docs/{name} lost its >>> examples")
+        self.assertEqual(result.failed, 0, f"docs/{name} shows values the module does not return (see above)")
+
+    def test_python_md(self):
+        self.check_page("python.md", 15)
 
     def test_formulas_md(self):
-        test = markdown_doctest(os.path.join(SOURCE_DIR, "docs", "formulas.md"))
-        runner = doctest.DocTestRunner(optionflags=doctest.ELLIPSIS)
-        runner.run(test)
-        result = runner.summarize(verbose=False)
-        self.assertGreaterEqual(result.attempted, 12, "docs/formulas.md lost its >>> examples")
-        self.assertEqual(result.failed, 0, "docs/formulas.md shows values the module does not return (see above)")
+        self.check_page("formulas.md", 12)
 
     def test_a_wrong_value_on_the_page_fails(self):
         text = ">>> 1 + 1\n3\n"

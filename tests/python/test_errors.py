@@ -33,6 +33,26 @@ class BadInputRaises(unittest.TestCase):
         self.check(viscor.InvalidParameter, ["gamma", "NaN"], viscor.cor, "tsuji", decimal.Decimal("NaN"), 0)
         self.check(viscor.InvalidParameter, ["gamma", "'nan'"], viscor.cor, "tsuji", "nan", 0)
 
+    def test_committed_data_is_not_replaced(self):
+        # A table whose name a SHA256SUMS beside it lists is committed data: refused before
+        # any work, the file and the manifest untouched (the CLI asks with --update-committed).
+        import hashlib
+        import tempfile
+        with tempfile.TemporaryDirectory() as tmp:
+            out = os.path.join(tmp, "cor_report_grid.csv")
+            with open(out, "w") as f:
+                f.write("law,gamma\n")
+            line = hashlib.sha256(b"law,gamma\n").hexdigest() + "  cor_report_grid.csv\n"
+            with open(os.path.join(tmp, "SHA256SUMS"), "w") as f:
+                f.write(line)
+            spec = {"laws": ["linear"], "gamma": [0.05], "g": 0, "digits": 20}
+            self.check(viscor.InvalidParameter, ["committed data", "cor_report_grid.csv"], viscor.table, spec, out)
+            with open(out) as f:
+                self.assertEqual(f.read(), "law,gamma\n")
+            with open(os.path.join(tmp, "SHA256SUMS")) as f:
+                self.assertEqual(f.read(), line)
+            self.assertFalse(os.path.exists(out + ".partial"))
+
     def test_negative_gamma(self):
         # The message names the value as parsed at the working precision (-1.000...e-01).
         self.check(ValueError, ["gamma", "-1.0"], viscor.cor, "tsuji", "-0.1", "0")

@@ -12,6 +12,8 @@
 
 #include <cerrno>
 #include <cstdio>
+#include <fcntl.h>
+#include <unistd.h>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -23,6 +25,22 @@
 
 namespace viscor {
 
+namespace detail {
+
+/// Writes all of `body` to `fd`, retrying short writes; false on an error.
+inline bool write_all(int fd, std::string_view body) {
+  std::size_t done = 0;
+  while (done < body.size()) {
+    const ssize_t n = ::write(fd, body.data() + done, body.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return false;
+    done += static_cast<std::size_t>(n);
+  }
+  return true;
+}
+
+}  // namespace detail
+
 /// The manifest's file name in a data directory.
 inline constexpr const char* checksum_manifest_name = "SHA256SUMS";
 
@@ -32,8 +50,12 @@ struct checksum_entry {
   std::string name;    ///< the file's name in the manifest's directory
 };
 
-/// The manifest beside `file` (empty when there is none). Throws parse_error naming the
-/// manifest and the line when a line is not "<64 hex digits>  <name>".
+/// The manifest beside `file` (empty when there is none). Reads what sha256sum writes,
+/// on any platform: CRLF line ends, the binary-mode mark ("<sha256> *<name>") and names
+/// given as "./name" (the same file). Throws parse_error naming the manifest and the
+/// line when a line is not "<64 hex digits>  <name>", when a name is not a file of the
+/// manifest's own directory (a path, or empty), and when a name is listed twice: a
+/// line that cannot be read is refused, never ignored.
 inline std::vector<checksum_entry> read_checksum_manifest(const std::filesystem::path& file) {
   const std::filesystem::path manifest = file.parent_path() / checksum_manifest_name;
   std::ifstream in(manifest, std::ios::binary);
@@ -41,14 +63,29 @@ inline std::vector<checksum_entry> read_checksum_manifest(const std::filesystem:
   if (!in) return entries;
   std::string line;
   for (int number = 1; std::getline(in, line); ++number) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
     if (line.empty()) continue;
+    const std::string where = manifest.string() + ":" + std::to_string(number) + ": ";
     const bool hex = line.size() > 66 && line.find_first_not_of("0123456789abcdef") == 64 &&
-                     line.compare(64, 2, "  ") == 0;
-    if (!hex)
-      throw parse_error(manifest.string() + ":" + std::to_string(number) + ": not a checksum line ('<sha256>  <name>')");
-    entries.push_back({line.substr(0, 64), line.substr(66)});
+                     (line.compare(64, 2, "  ") == 0 || line.compare(64, 2, " *") == 0);
+    if (!hex) throw parse_error(where + "not a checksum line ('<sha256>  <name>')");
+    std::string name = line.substr(66);
+    if (name.rfind("./", 0) == 0) name.erase(0, 2);
+    if (name.empty() || name.find('/') != std::string::npos || name == "." || name == "..")
+      throw parse_error(where + "'" + name.substr(0, 80) + "' is not the name of a file in the manifest's directory");
+    for (const checksum_entry& e : entries)
+      if (e.name == name) throw parse_error(where + "'" + name + "' is listed twice");
+    entries.push_back({line.substr(0, 64), name});
   }
   return entries;
+}
+
+/// Whether the manifest beside `file` lists it: a file of committed data.
+inline bool listed_in_checksum_manifest(const std::filesystem::path& file) {
+  const std::string name = file.filename().string();
+  for (const checksum_entry& e : read_checksum_manifest(file))
+    if (e.name == name) return true;
+  return false;
 }
 
 /// Throws parse_error when `content`, read from `path`, is listed in the manifest
@@ -94,19 +131,23 @@ inline void update_checksum(const std::string& path, std::string_view content) {
     if (e.name == name && e.sha256 != digest) e.sha256 = digest, changed = true;
   if (!changed) return;
   const std::filesystem::path manifest = file.parent_path() / checksum_manifest_name;
-  const std::string temporary = manifest.string() + ".tmp";
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    for (const checksum_entry& e : entries) out << e.sha256 << "  " << e.name << "\n";
-    out.close();
-    if (!out) {
-      std::remove(temporary.c_str());
-      throw error("cannot rewrite the checksum manifest '" + manifest.string() + "'");
-    }
+  std::string body;
+  for (const checksum_entry& e : entries) body += e.sha256 + "  " + e.name + "\n";
+  // A new file of our own (O_EXCL: never a file or a symbolic link planted at the name),
+  // every write checked to the close, then renamed over the manifest.
+  const std::string temporary = manifest.string() + ".tmp." + std::to_string(::getpid());
+  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
+  if (fd < 0)
+    throw error("cannot rewrite the checksum manifest '" + manifest.string() + "': cannot create '" + temporary +
+                "': " + std::strerror(errno));
+  const bool written = detail::write_all(fd, body) && ::fsync(fd) == 0;
+  if (::close(fd) != 0 || !written) {
+    ::unlink(temporary.c_str());
+    throw error("cannot rewrite the checksum manifest '" + manifest.string() + "'");
   }
   if (std::rename(temporary.c_str(), manifest.c_str()) != 0) {
     const int e = errno;
-    std::remove(temporary.c_str());
+    ::unlink(temporary.c_str());
     throw error("cannot replace '" + manifest.string() + "': " + std::strerror(e));
   }
 }

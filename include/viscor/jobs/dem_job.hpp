@@ -198,6 +198,7 @@ struct dem_job : dem_request {
       throw invalid_parameter("--drop-deck " + drop_deck_path + ": a YADE script must end in .py (yade -x "
                               "silently skips other files)");
     if (!variables_path.empty()) check_variables_request(model, reverse);
+    refuse_outputs_not_ours();  // before any work: a foreign file, a FIFO or a directory
     if (!reverse) {
       require(target_e, "--target-e", "the measured coefficient of restitution, 0 < e < 1");
       require(v0, "--v0", "impact speed, m/s");
@@ -354,14 +355,15 @@ struct dem_job : dem_request {
          << to_decimal_string(timing.time_scale, 6) << " s, about "
          << static_cast<long>(static_cast<double>(timing.contact_time / timing.time_step)) << " steps per contact)\n";
     text << "snippet\n" << snippet;
+    write_deck_files(drop_deck_path.empty() ? std::string() : dem::drop_deck(model, s, drop_inputs(impact, timing)),
+                     variables_path.empty() ? std::string()
+                                            : variable_block(model, impact.kind, s, drop_inputs(impact, timing),
+                                                             to_decimal_string(timing.contact_time)));
     if (!drop_deck_path.empty()) {
-      write_drop_deck(dem::drop_deck(model, s, drop_inputs(impact, timing)));
       j["drop_deck"] = drop_deck_path;
       text << "drop deck   wrote " << drop_deck_path << " (run: " << drop_run_command(model) << ")\n";
     }
     if (!variables_path.empty()) {
-      write_variables(variable_block(model, impact.kind, s, drop_inputs(impact, timing),
-                                     to_decimal_string(timing.contact_time)));
       j["variables"] = variables_path;
       text << "variables   wrote " << variables_path << " (in the deck: include " << variables_path
            << ", then ${viscor_...}; units si)\n";
@@ -420,13 +422,22 @@ struct dem_job : dem_request {
     return b;
   }
 
-  /// Writes the block (jobs/files.hpp); never replaces a file viscor did not write.
-  void write_variables(const std::string& block) const {
-    std::error_code ec;
-    if (std::filesystem::exists(variables_path, ec) && !file_starts_with(variables_path, variables_marker))
-      throw invalid_parameter("--variables " + variables_path + ": the file exists and is not a variable block "
-                              "viscor wrote; refusing to replace it (remove it or choose another name)");
-    write_atomically(variables_path, block);
+  /// Refuses a --drop-deck or --variables path that holds anything but viscor's own
+  /// unedited file of that kind (jobs/files.hpp: its seal), a FIFO, a directory or a device.
+  void refuse_outputs_not_ours() const {
+    if (!drop_deck_path.empty())
+      refuse_unless_own_or_absent(drop_deck_path, dem::drop_deck_marker, "--drop-deck", "a drop deck");
+    if (!variables_path.empty())
+      refuse_unless_own_or_absent(variables_path, variables_marker, "--variables", "a variable block");
+  }
+
+  /// Writes the drop deck and the variable block that were asked for, each sealed (its last
+  /// line the SHA-256 of the rest), after checking both again: neither is written when the
+  /// other may not be.
+  void write_deck_files(const std::string& deck, const std::string& block) const {
+    refuse_outputs_not_ours();
+    if (!drop_deck_path.empty()) write_atomically(drop_deck_path, sealed(deck));
+    if (!variables_path.empty()) write_atomically(variables_path, sealed(block));
   }
 
   /// LAMMPS and LIGGGHTS read the like-bead entries apart from the contact's (pair_coeff, type pairs (1,1), (2,2))
@@ -497,15 +508,6 @@ struct dem_job : dem_request {
     return {};
   }
 
-  /// Writes the deck (jobs/files.hpp); never replaces a file viscor did not write
-  /// (a drop deck's first line is the marker).
-  void write_drop_deck(const std::string& deck) const {
-    std::error_code ec;
-    if (std::filesystem::exists(drop_deck_path, ec) && !file_starts_with(drop_deck_path, dem::drop_deck_marker))
-      throw invalid_parameter("--drop-deck " + drop_deck_path + ": the file exists and is not a drop deck viscor "
-                              "wrote; refusing to replace it (remove it or choose another name)");
-    write_atomically(drop_deck_path, deck);
-  }
 
   template <class Real>
   void run_reverse(const dem::dem_model& model, dem::dem_impact<Real>& impact, json& j, std::ostringstream& text) const {

@@ -1,14 +1,20 @@
 // Files as the jobs read and write them: a whole file read at once, and output
 // written safely (only regular files, every write checked up to the close, the file
-// replaced in one rename so that a failure leaves nothing behind, and its line in a
-// checksum manifest beside it kept true: core/checksums.hpp).
+// replaced in one rename so that a failure leaves nothing behind; committed data, a
+// file a checksum manifest lists, replaced only when asked and then its line kept
+// true: core/checksums.hpp), files viscor may replace later sealed with their SHA-256,
+// and one writer per output (output_lock).
 #pragma once
 
 #include <viscor/core/checksums.hpp>
 #include <viscor/core/exceptions.hpp>
+#include <viscor/core/sha256.hpp>
 
+#include <atomic>
 #include <cerrno>
+#include <cstdint>
 #include <cstring>
+#include <filesystem>
 #include <fcntl.h>
 #include <fstream>
 #include <sstream>
@@ -42,40 +48,83 @@ inline void refuse_unless_regular_or_absent(const std::string& path) {
                           "; viscor writes only regular files (name a new or regular file)");
 }
 
-/// Whether the file at `path` begins with `prefix` (false if it cannot be read):
-/// how viscor recognises a file it wrote before replacing it.
-inline bool file_starts_with(const std::string& path, const std::string& prefix) {
-  std::ifstream in(path, std::ios::binary);
-  std::string head(prefix.size(), '\0');
-  return in.read(head.data(), static_cast<std::streamsize>(head.size())) && head == prefix;
+/// The last line of a file that viscor may replace later (a deck, a variable block): the
+/// SHA-256 of everything before it. A name or a first line is no proof that viscor
+/// wrote a file; a seal that matches is, and an edit breaks it.
+inline constexpr const char* seal_prefix = "# viscor sha256 ";
+
+/// `body` with its seal as the last line (after a line end of its own, if `body` lacks one).
+inline std::string sealed(std::string body) {
+  if (!body.empty() && body.back() != '\n') body += '\n';
+  return body + seal_prefix + sha256_hex(body) + "\n";
 }
 
-namespace detail {
+/// The largest file viscor takes for one it wrote (its decks and blocks are a few kB).
+inline constexpr std::uintmax_t max_sealed_file_size = 1 << 20;
 
-inline bool write_all(int fd, const std::string& body) {
-  std::size_t done = 0;
-  while (done < body.size()) {
-    const ssize_t n = ::write(fd, body.data() + done, body.size() - done);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return false;
-    done += static_cast<std::size_t>(n);
+/// Whether `path` is a regular file (not followed through a symbolic link) that viscor
+/// wrote and nobody changed since: it starts with `marker` and ends with the seal of
+/// everything before the seal. Reads nothing from anything but a small regular file.
+inline bool is_unedited_viscor_file(const std::string& path, const std::string& marker) {
+  struct stat st {};
+  if (::lstat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode) || static_cast<std::uintmax_t>(st.st_size) > max_sealed_file_size)
+    return false;
+  std::string text;
+  try {
+    text = read_file(path);
+  } catch (const error&) {
+    return false;
   }
-  return true;
+  const std::size_t seal = text.rfind(seal_prefix);
+  if (text.rfind(marker, 0) != 0 || seal == std::string::npos || text.back() != '\n') return false;
+  const std::string body = text.substr(0, seal);
+  return text.compare(seal, std::string::npos, std::string(seal_prefix) + sha256_hex(body) + "\n") == 0;
 }
 
-}  // namespace detail
+/// Refuses, before any work, an output (`option` names it in the message) that viscor
+/// may write only over its own unedited file: absent, or is_unedited_viscor_file.
+inline void refuse_unless_own_or_absent(const std::string& path, const std::string& marker, const std::string& option,
+                                        const std::string& what) {
+  refuse_unless_regular_or_absent(path);
+  struct stat st {};
+  if (::lstat(path.c_str(), &st) != 0) return;
+  if (!is_unedited_viscor_file(path, marker))
+    throw invalid_parameter(option + " " + path + ": the file exists and is not " + what +
+                            " viscor wrote (or it was edited since: its last line, the seal, no longer matches); "
+                            "refusing to replace it (remove it or choose another name)");
+}
+
+/// Whether viscor may replace a file that the checksum manifest beside it lists (committed
+/// data): not unless a front end says so for this process (the CLI's --update-committed).
+inline std::atomic<bool>& replacing_committed_data_allowed() {
+  static std::atomic<bool> allowed{false};
+  return allowed;
+}
+
+/// Refuses to write over `path` when the manifest beside it lists it, unless replacing
+/// committed data was asked for: an ordinary -o never rewrites certified tables or their
+/// checksums.
+inline void refuse_committed_unless_allowed(const std::string& path) {
+  if (replacing_committed_data_allowed() || !listed_in_checksum_manifest(path)) return;
+  throw invalid_parameter("output file '" + path + "' is committed data listed in " +
+                          (std::filesystem::path(path).parent_path() / checksum_manifest_name).string() +
+                          "; viscor replaces it only when asked to (viscor --update-committed ..., which also updates "
+                          "its checksum line): write elsewhere");
+}
 
 /// Writes `body` to `path`: into a new temporary file beside it (every write,
 /// the fsync and the close checked), then renamed over `path`. Only regular files
 /// are written: an existing `path` that is not a regular file (a device, a FIFO, a
-/// directory, a symbolic link) is refused and left alone. Any failure removes the
+/// directory, a symbolic link) is refused and left alone, and so is a file a checksum
+/// manifest lists (refuse_committed_unless_allowed). Any failure removes the
 /// temporary and throws, so nothing is left behind.
 inline void write_atomically(const std::string& path, const std::string& body) {
   refuse_unless_regular_or_absent(path);
+  refuse_committed_unless_allowed(path);
   const std::string temporary = path + ".tmp." + std::to_string(::getpid());
   const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
   if (fd < 0) throw error("cannot write output file '" + path + "': " + std::strerror(errno));
-  const bool written = detail::write_all(fd, body) && ::fsync(fd) == 0;
+  const bool written = viscor::detail::write_all(fd, body) && ::fsync(fd) == 0;
   const int saved = errno;
   if (::close(fd) != 0 || !written) {
     ::unlink(temporary.c_str());
@@ -98,15 +147,23 @@ inline void write_atomically(const std::string& path, const std::string& body) {
 /// An exclusive lock on an output: the file `output + ".lock"`, held with flock(2)
 /// while the job runs, so that a second viscor writing the same output stops at once
 /// with a message instead of both appending to one partial file. The lock file is
-/// removed when the holder finishes (a lock left by a killed run is free again: the
-/// kernel drops flock locks with the process).
+/// removed when the holder that created it finishes; a lock file that was there before
+/// (left by a killed run: free again, the kernel drops flock locks with the process) is
+/// locked but left in place.
 class output_lock {
  public:
   /// Takes the lock; throws viscor::error naming the output when another process holds it.
   explicit output_lock(const std::string& output) : m_path(output + ".lock") {
     refuse_unless_regular_or_absent(m_path);
     for (int attempt = 0; attempt < 100; ++attempt) {
-      m_fd = ::open(m_path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0666);
+      // Ours when we create it; an existing lock file (another run's, or left by a killed
+      // one) is locked but never removed by us.
+      m_fd = ::open(m_path.c_str(), O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC | O_NOFOLLOW, 0666);
+      m_created = m_fd >= 0;
+      if (!m_created && errno == EEXIST) {
+        m_fd = ::open(m_path.c_str(), O_RDWR | O_CLOEXEC | O_NOFOLLOW);
+        if (m_fd < 0 && errno == ENOENT) continue;  // its holder removed it meanwhile: try again
+      }
       if (m_fd < 0) throw error("cannot create the lock file '" + m_path + "': " + std::strerror(errno));
       if (::flock(m_fd, LOCK_EX | LOCK_NB) != 0) {
         const int e = errno;
@@ -129,13 +186,14 @@ class output_lock {
   output_lock(const output_lock&) = delete;
   output_lock& operator=(const output_lock&) = delete;
   ~output_lock() {
-    ::unlink(m_path.c_str());  // before the unlock, so that a waiter re-checks the path
+    if (m_created) ::unlink(m_path.c_str());  // before the unlock, so that a waiter re-checks the path
     ::close(m_fd);
   }
 
  private:
   std::string m_path;
   int m_fd = -1;
+  bool m_created = false;  ///< whether this lock made the file (only then is it removed)
 };
 
 }  // namespace viscor::jobs

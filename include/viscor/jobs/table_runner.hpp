@@ -246,8 +246,10 @@ inline table_run_summary run_table_job(const table_job& job) {
   const table_format format{job.kind, job.proven};
   // Before any work: every file this run writes must be a regular file or absent, and
   // no other run may be writing them.
-  for (const std::string& path : {job.output, job.output + ".json", partial, partial_meta})
+  for (const std::string& path : {job.output, job.output + ".json", partial, partial_meta}) {
     refuse_unless_regular_or_absent(path);
+    refuse_committed_unless_allowed(path);  // before hours of work, not at the end
+  }
   const output_lock lock(job.output);
 
   // Rows already done by an interrupted run.
