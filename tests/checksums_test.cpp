@@ -167,6 +167,10 @@ TEST(Checksums, ManifestsAreReadCorrectlyOrRefusedNeverIgnored) {
     std::ofstream(manifest, std::ios::binary) << line;
     EXPECT_THROW(viscor::read_checksum_manifest(file), viscor::parse_error) << line;
   }
+  // A name with a control character (a second CR before the line end: found by the
+  // manifest fuzzer) names no file viscor lists: refused, not read as another name.
+  for (const std::string& text : {hash + "  a.csv\r\r\n", hash + "  a\x01.csv\n"})
+    EXPECT_THROW(viscor::parse_checksum_manifest(text, "SHA256SUMS"), viscor::parse_error) << text;
 }
 
 // The manifest's temporary file is created exclusively: a symbolic link planted at its name
@@ -209,6 +213,42 @@ TEST(Checksums, OnlyAnUneditedSealedFileCountsAsViscors) {
   EXPECT_NO_THROW(viscor::jobs::refuse_unless_own_or_absent(own.string(), marker, "--variables", "a variable block"));
   EXPECT_NO_THROW(viscor::jobs::refuse_unless_own_or_absent((s.path / "new.in").string(), marker, "--variables", "x"));
   EXPECT_EQ(viscor::jobs::sealed("no line end").rfind("no line end\n# viscor sha256 ", 0), 0u);
+}
+
+// A C export's seal is a C comment, checked the same way; a seal of the other style is no seal.
+TEST(Checksums, TheSealOfACExportIsACComment) {
+  scratch_dir s{"viscor_sealed_c"};
+  const std::string marker = "/* viscor_x.h: ";
+  const std::string body = marker + "test */\nint x;\n";
+  const std::string text = viscor::jobs::sealed(body, viscor::jobs::c_comment_seal);
+  EXPECT_EQ(text, body + "/* viscor sha256 " + viscor::sha256_hex(body) + " */\n");
+  const fs::path own = s.path / "own.h", other_style = s.path / "other.h";
+  std::ofstream(own, std::ios::binary) << text;
+  EXPECT_TRUE(viscor::jobs::is_unedited_viscor_file(own.string(), marker, viscor::jobs::c_comment_seal));
+  EXPECT_FALSE(viscor::jobs::is_unedited_viscor_file(own.string(), marker));  // looked for as '# viscor sha256'
+  std::ofstream(other_style, std::ios::binary) << viscor::jobs::sealed(body);
+  EXPECT_FALSE(viscor::jobs::is_unedited_viscor_file(other_style.string(), marker, viscor::jobs::c_comment_seal));
+}
+
+// A command's outputs are published together: when one of them may not be written, none is,
+// and no temporary is left behind.
+TEST(Checksums, OutputsArePublishedTogetherOrNotAtAll) {
+  scratch_dir s{"viscor_together"};
+  const fs::path a = s.path / "a.csv", b = s.path / "b.json", dir = s.path / "d";
+  std::ofstream(a, std::ios::binary) << "old a\n";
+  fs::create_directory(dir);
+  EXPECT_THROW(viscor::jobs::write_together({{a.string(), "new a\n"}, {dir.string(), "x\n"}}), viscor::invalid_parameter);
+  EXPECT_EQ(slurp(a), "old a\n");
+  // A failure while writing (the second temporary cannot be created: its folder is missing).
+  const fs::path missing = s.path / "no_such_folder" / "b.json";
+  EXPECT_THROW(viscor::jobs::write_together({{a.string(), "new a\n"}, {missing.string(), "x\n"}}), viscor::error);
+  EXPECT_EQ(slurp(a), "old a\n");
+  std::size_t entries = 0;
+  for ([[maybe_unused]] const auto& e : fs::directory_iterator(s.path)) ++entries;
+  EXPECT_EQ(entries, 2u);  // a.csv and d: no temporary left
+  viscor::jobs::write_together({{a.string(), "new a\n"}, {b.string(), "new b\n"}});
+  EXPECT_EQ(slurp(a), "new a\n");
+  EXPECT_EQ(slurp(b), "new b\n");
 }
 
 // `cor -o` over a committed table: refused before any work, the table and the manifest untouched;

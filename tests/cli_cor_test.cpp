@@ -60,6 +60,29 @@ TEST(CliCor, LinearLawAt210Digits) {
   EXPECT_GE(viscor::test::agreeing_digits(e, exact->e), 205.0) << j["e"];
 }
 
+// The JSON names the arithmetic, and says when the solve left the one the digits chose:
+// at 25 digits, gamma = 1e-280 under g = 1e6 leaves double-double's range (its 1 - e then
+// agrees with the closed form to 31 digits, not 10).
+TEST(CliCor, PrecisionNamesTheArithmeticAndItsEscalation) {
+  if (!cli_built()) GTEST_SKIP() << "viscor CLI not built";
+  const auto plain = run_cli("cor --model linear --gamma 0.05 --g 1 --digits 25 --json");
+  ASSERT_EQ(plain.status, 0) << plain.err;
+  const auto p = nlohmann::json::parse(plain.out)["precision"];
+  if (p["arithmetic"] != "double-double") GTEST_SKIP() << "this build has no double-double (QD)";
+  EXPECT_FALSE(p.contains("escalated_from")) << p;
+  const auto tiny = run_cli("cor --model linear --gamma 1e-280 --g 1e6 --digits 25 --json");
+  ASSERT_EQ(tiny.status, 0) << tiny.err;
+  const auto j = nlohmann::json::parse(tiny.out);
+  EXPECT_NE(j["precision"]["arithmetic"], "double-double") << j["precision"];
+  EXPECT_EQ(j["precision"]["escalated_from"], "double-double") << j["precision"];
+  viscor::scoped_precision digits(50);
+  const mpfr_real one_minus_e = viscor::parse_real<mpfr_real>(j["one_minus_e"].get<std::string>(), "1 - e");
+  const auto exact = viscor::exact_cor<mpfr_real>(viscor::law_by_name("linear"), mpfr_real("1e-280"), mpfr_real("1e6"));
+  EXPECT_GE(viscor::test::agreeing_digits(one_minus_e, exact->one_minus_e), 31.0) << j["one_minus_e"];
+  EXPECT_EQ(nlohmann::json::parse(run_cli("cor --model linear --gamma 0.05 --g 1 --json").out)["precision"]["arithmetic"],
+            "double");
+}
+
 TEST(CliCor, BadInputNamesTheValue) {
   if (!cli_built()) GTEST_SKIP() << "viscor CLI not built";
   auto r = run_cli("cor --model linear --gamma -1");

@@ -157,6 +157,20 @@ TEST_F(CliInputChecks, UnderflowIsRefusedLikeOverflow) {
   EXPECT_EQ(run_cli("cor --model linear --gamma 0.1 --g 1e-400 --digits 50").status, 0);
 }
 
+// Physical inputs are SI values: the same range at every working precision, so that
+// v0 = 1e-400 is refused naming v0 at 20 and 50 digits as at 15 (float128 and MPFR
+// would hold it, and the answer would depend on the digits asked for).
+TEST_F(CliInputChecks, PhysicalInputsHaveTheSameRangeAtEveryPrecision) {
+  const std::string bead = "cor --model tsuji --m 1e-3 --k 1e6 --gamma0 1e-5 --gravity 9.81";
+  for (const char* digits : {"15", "20", "50"}) {
+    expect_refused(bead + " --v0 1e-400 --digits " + digits, {"v0", "1e-400", "underflow"});
+    expect_refused(bead + " --v0 1e400 --digits " + digits, {"v0", "1e400", "overflow"});
+  }
+  expect_refused("cor --model tsuji --m 1e-3 --k 1e-320 --gamma0 1e-5 --v0 1 --gravity 9.81 --digits 30",
+                 {"k", "1e-320", "underflow"});
+  EXPECT_EQ(run_cli(bead + " --v0 1 --digits 20").status, 0);
+}
+
 TEST_F(CliInputChecks, OutOfRangeOptionsAreRefused) {
   expect_refused("cor --model linear --gamma 0.1 --tolerance 2", {"tolerance", "2"});
   expect_refused("cor --model linear --gamma 0.1 --tolerance 1", {"tolerance", "1"});

@@ -152,6 +152,23 @@ TEST(CorProve, NotProvableOrPhysicalExits2WithoutOutput) {
   EXPECT_NE(r.err.find("not provable"), std::string::npos) << r.err;
 }
 
+// Exponents whose u = s^Q would need huge series (Q, Q alpha or Q beta past the caps
+// the solver has too) are refused before any allocation, naming the exponents.
+TEST(ProveCli, ExponentsPastTheRootVariableCapsAreRefused) {
+  for (const auto& [law, says] : std::vector<std::pair<std::string, std::string>>{
+           {"--alpha 4611686018427387905 --beta 1", "Q alpha = 4611686018427387905"},
+           {"--alpha 1000000001/1000000000 --beta 1", "Q = 1000000000"},
+           {"--alpha 3/2 --beta 1001/1000", "Q = 1000, Q alpha = 1500, Q beta = 1001"}}) {
+    for (const std::string command : {"prove " + law + " --gamma 0.1 --g 0 --digits 20",
+                                      "cor " + law + " --gamma 0.1 --g 0 --digits 20 --prove"}) {
+      const auto r = viscor::test::run_cli(command);
+      EXPECT_EQ(r.status, 2) << command << ": " << r.err;
+      EXPECT_NE(r.err.find("not provable"), std::string::npos) << command << ": " << r.err;
+      EXPECT_NE(r.err.find(says), std::string::npos) << command << ": " << r.err;
+    }
+  }
+}
+
 TEST(ProveCli, ProvesAStick) {
   const auto r = viscor::test::run_cli("prove --model kuwabara_kono --gamma 0.5 --g 3 --digits 20 --json");
   ASSERT_EQ(r.status, 0) << r.err;

@@ -63,6 +63,34 @@ TEST(OutputLock, TwoLocksInOneProcessExcludeEachOther) {
   EXPECT_THROW(viscor::jobs::output_lock second(out), viscor::error);
 }
 
+// table merge writes the same outputs as a table run: it takes the same lock, before
+// it reads anything, and writes nothing while another viscor holds it.
+TEST(OutputLock, TableMergeTakesTheLock) {
+  scratch_dir s{"viscor_lock"};
+  ASSERT_FALSE(s.path.empty());
+  const std::string spec = (s.path / "spec.json").string(), out = (s.path / "all.csv").string();
+  std::ofstream(spec) << R"({"laws": ["linear"], "gamma": [0.05, 0.5], "g": 1, "digits": 20})";
+  std::string shards;
+  for (const char* part : {"0", "1"}) {
+    const std::string shard = (s.path / ("s" + std::string(part) + ".csv")).string();
+    const auto made = run_cli("table " + spec + " -o " + shard + " --shard " + part + "/2 --quiet");
+    ASSERT_EQ(made.status, 0) << made.err;
+    shards += " " + shard;
+  }
+  {
+    const viscor::jobs::output_lock held(out);
+    const auto r = run_cli("table merge" + shards + " -o " + out);
+    EXPECT_NE(r.status, 0);
+    EXPECT_NE(r.err.find("another viscor is writing '" + out + "'"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(out));
+    EXPECT_FALSE(std::filesystem::exists(out + ".json"));
+  }
+  const auto r = run_cli("table merge" + shards + " -o " + out);
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(std::filesystem::exists(out));
+  EXPECT_FALSE(std::filesystem::exists(out + ".lock"));
+}
+
 TEST(SceneLimits, HugeImpactCountIsRefusedNamingTheField) {
   scratch_dir s{"viscor_lock"};
   const std::string scene = (s.path / "scene.json").string();

@@ -18,6 +18,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <random>
 #include <sstream>
@@ -126,6 +127,128 @@ TEST(SurrogateExport, CommittedExportIsCurrent) {
           << "examples/c_export/" << f.name << " does not carry the SHA-256 of " << file;
     }
   }
+}
+
+// A copy of tsuji's committed surrogate and verification table in a scratch folder,
+// the surrogate's text passed through `edit`; with `manifest`, a SHA256SUMS listing
+// the committed (unedited) hashes of both.
+fs::path tsuji_copy(const std::string& name, const std::function<void(std::string&)>& edit, bool manifest) {
+  const fs::path dir = scratch(name);
+  const std::string surrogate = viscor::jobs::read_file(surrogate_dir() + "/tsuji.surrogate");
+  const std::string table = viscor::jobs::read_file(surrogate_dir() + "/tsuji.surrogate.verification.csv");
+  std::string edited = surrogate;
+  edit(edited);
+  std::ofstream(dir / "tsuji.surrogate", std::ios::binary) << edited;
+  std::ofstream(dir / "tsuji.surrogate.verification.csv", std::ios::binary) << table;
+  if (manifest)
+    std::ofstream(dir / "SHA256SUMS", std::ios::binary)
+        << viscor::sha256_hex(surrogate) << "  tsuji.surrogate\n"
+        << viscor::sha256_hex(table) << "  tsuji.surrogate.verification.csv\n";
+  return dir;
+}
+
+std::string export_refusal(const fs::path& surrogates) {
+  surrogate_export_options o;
+  o.surrogate_directory = surrogates.string();
+  o.laws = {"tsuji"};
+  o.output_directory = (surrogates / "out").string();
+  try {
+    viscor::jobs::export_surrogates(o);
+  } catch (const viscor::invalid_parameter& e) {
+    EXPECT_FALSE(fs::exists(surrogates / "out" / "viscor_surrogate_tsuji.c"));
+    return e.what();
+  }
+  return "";
+}
+
+// The export reads the surrogates through the checking reader: one changed digit in a
+// surrogate a manifest lists is refused, and nothing is written.
+TEST(SurrogateExport, ReadsOnlyCheckedSurrogates) {
+  const auto one_digit = [](std::string& t) { t.replace(t.find("0.33417913660990911"), 19, "0.33417913660990912"); };
+  EXPECT_EQ(export_refusal(tsuji_copy("checked_intact", [](std::string&) {}, true)), "");
+  const std::string why = export_refusal(tsuji_copy("checked_changed", one_digit, true));
+  EXPECT_NE(why.find("tsuji.surrogate: content does not match its SHA-256"), std::string::npos) << why;
+}
+
+// Without a manifest to catch it, the export's own accuracy table does: a surrogate
+// whose stated bound its verification points break is not exported.
+TEST(SurrogateExport, RefusesASurrogateThatBreaksItsOwnBound) {
+  const auto changed_coefficient = [](std::string& t) {
+    t.replace(t.find("0.33417913660990911"), 19, "0.34417913660990911");  // one digit of the threshold's first coefficient
+  };
+  const auto tighter_bound = [](std::string& t) {
+    t.replace(t.find("bound 2.8800713645026586e-13"), 28, "bound 2.8800713645026586e-17");
+  };
+  for (const auto& [what, edit] : std::vector<std::pair<std::string, std::function<void(std::string&)>>>{
+           {"a changed coefficient", changed_coefficient}, {"a bound tighter than measured", tighter_bound}}) {
+    const std::string why = export_refusal(tsuji_copy("own_bound", edit, false));
+    EXPECT_NE(why.find("breaks the bound it states on its own verification table"), std::string::npos)
+        << what << ": " << (why.empty() ? "exported" : why);
+  }
+}
+
+// -o DIR replaces only an export viscor wrote and nobody edited (its seal matches);
+// both files are checked before either is written.
+TEST(SurrogateExport, ReplacesOnlyItsOwnUneditedFiles) {
+  const fs::path dir = scratch("own_files");
+  surrogate_export_options o;
+  o.surrogate_directory = surrogate_dir();
+  o.laws = {"tsuji"};
+  o.output_directory = dir.string();
+  const fs::path h = dir / "viscor_surrogate_tsuji.h", c = dir / "viscor_surrogate_tsuji.c";
+  viscor::jobs::export_surrogates(o);
+  const std::string header = viscor::jobs::read_file(h.string()), source = viscor::jobs::read_file(c.string());
+  EXPECT_NO_THROW(viscor::jobs::export_surrogates(o));  // its own, unedited: replaced
+  std::ofstream(c, std::ios::app) << "/* a user's note */\n";
+  EXPECT_THROW(viscor::jobs::export_surrogates(o), viscor::invalid_parameter);
+  EXPECT_EQ(viscor::jobs::read_file(c.string()), source + "/* a user's note */\n");
+  fs::remove(c);
+  std::ofstream(h, std::ios::trunc) << "/* viscor_surrogate_tsuji.h: somebody else's header */\n";
+  EXPECT_THROW(viscor::jobs::export_surrogates(o), viscor::invalid_parameter);
+  EXPECT_FALSE(fs::exists(c));  // the .c is not written when the .h may not be
+  fs::remove(h);
+  viscor::jobs::export_surrogates(o);
+  EXPECT_EQ(viscor::jobs::read_file(h.string()), header);
+}
+
+// A null surrogate and a negative gravity are documented results in C (NaN, or the
+// outcome VISCOR_OUTSIDE_DOMAIN), not a crash or a silent number.
+TEST(SurrogateExport, NullSurrogateAndNegativeGravityAreRefusedInC) {
+  if (!have("cc")) VISCOR_SKIP_OR_FAIL_MISSING("a C compiler (cc)");
+  const fs::path dir = scratch("refusals_in_c");
+  surrogate_export_options o;
+  o.surrogate_directory = surrogate_dir();
+  o.laws = {"tsuji"};
+  o.output_directory = dir.string();
+  viscor::jobs::export_surrogates(o);
+  std::ofstream(dir / "driver.c") << R"(#include <math.h>
+#include <stdio.h>
+#include "viscor_surrogate_tsuji.h"
+int main(void) {
+    const viscor_surrogate* s = viscor_surrogate_named("tsuji");
+    const viscor_surrogate* none = viscor_surrogate_named("no_such_law");
+    int bad = 0;
+    bad += none != 0;
+    bad += viscor_cor_at(none, 0.1, 0.5).outcome != VISCOR_OUTSIDE_DOMAIN || !isnan(viscor_e(none, 0.1, 0.5));
+    bad += !isnan(viscor_critical_gamma(none, 1.0)) || !isnan(viscor_gamma_for(none, 0.8, 0.5));
+    bad += !isnan(viscor_time_scale(none, 1e-3, 1e6, 1.0)) || !isnan(viscor_scaled_g(none, 1e-3, 1e6, 1.0, 9.81, 0));
+    bad += viscor_cor_physical(none, 1e-3, 1e6, 1e-3, 1.0, 9.81, 0).outcome != VISCOR_OUTSIDE_DOMAIN;
+    bad += !isnan(viscor_damping_for(none, 0.8, 1e-3, 1e6, 1.0, 9.81, 0));
+    bad += viscor_cor_physical(s, 1e-3, 1e6, 1e-6, 1.0, -9.81, 0).outcome != VISCOR_OUTSIDE_DOMAIN;
+    bad += !isnan(viscor_damping_for(s, 0.8, 1e-3, 1e6, 1.0, -9.81, 0));
+    bad += !isnan(viscor_scaled_g(s, 1e-3, 1e6, 1.0, -9.81, 0));
+    /* the same inputs with gravity towards the wall give numbers */
+    bad += viscor_cor_physical(s, 1e-3, 1e6, 1e-6, 1.0, 9.81, 0).outcome != VISCOR_REBOUND;
+    bad += isnan(viscor_damping_for(s, 0.8, 1e-3, 1e6, 1.0, 9.81, 0));
+    printf("%d wrong\n", bad);
+    return bad != 0;
+}
+)";
+  const auto [status, output] =
+      run("cd '" + dir.string() + "' && cc -std=c99 -O2 driver.c viscor_surrogate_tsuji.c -lm -o driver && ./driver",
+          dir / "driver.log");
+  EXPECT_EQ(status, 0) << output;
+  EXPECT_NE(output.find("0 wrong"), std::string::npos) << output;
 }
 
 TEST(SurrogateExport, CompilesWarningFreeAsC99AndAsCxx) {

@@ -14,6 +14,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -82,28 +83,49 @@ TEST(TableRowConsistency, MoreCertifiedDigitsThanWritten) {
   EXPECT_NE(why.find("claims 99 certified digits"), std::string::npos) << why;
 }
 
-// --resume keeps only rows that are the grid points of their index.
-TEST(TableRowConsistency, ResumedRowOffTheGridIsRefused) {
+/// A table run of `spec_text` stopped after its first row, that row of its .partial
+/// passed through `change`, then resumed (`partial` names the .partial in messages).
+struct resume_attempt {
+  viscor::test::cli_run resumed;
+  bool output_written = false;
+  std::string partial;
+};
+
+resume_attempt resume_with_changed_row(const std::string& spec_text,
+                                       const std::function<void(std::vector<std::string>&)>& change) {
   const scratch_dir scratch{"viscor_row_consistency"};
-  ASSERT_FALSE(scratch.path.empty());
+  EXPECT_FALSE(scratch.path.empty());
   const std::string dir = scratch.path.string(), spec = dir + "/spec.json", out = dir + "/t.csv";
-  std::ofstream(spec) << R"({"laws": ["linear"], "gamma": [0.05, 0.1, 0.5], "g": 1, "digits": 20})";
+  std::ofstream(spec) << spec_text;
   setenv("VISCOR_TABLE_STOP_AFTER", "1", 1);
   const auto stopped = run_cli("table " + spec + " -o " + out + " --threads 1 --quiet", VISCOR_CLI_TEST_HOOKS_PATH);
   unsetenv("VISCOR_TABLE_STOP_AFTER");
-  ASSERT_NE(stopped.status, 0);
+  EXPECT_NE(stopped.status, 0);
   std::ifstream in(out + ".partial");
   std::string header, row;
   std::getline(in, header), std::getline(in, row);
   in.close();
   std::vector<std::string> f = split(row);
-  ASSERT_GE(f.size(), 6u);
-  f[4] = f[4] == "0.05" ? "0.07" : "0.05";  // a gamma of another row, or off the grid
+  EXPECT_GE(f.size(), 13u);
+  if (f.size() >= 13) change(f);
   std::ofstream(out + ".partial") << header << "\n" << join(f) << "\n";
-  const auto resumed = run_cli("table " + spec + " -o " + out + " --resume --quiet");
-  EXPECT_NE(resumed.status, 0);
-  EXPECT_NE(resumed.err.find("not the grid point"), std::string::npos) << resumed.err;
-  EXPECT_FALSE(fs::exists(out));
+  resume_attempt a;
+  a.resumed = run_cli("table " + spec + " -o " + out + " --resume --quiet");
+  a.output_written = fs::exists(out);
+  a.partial = out + ".partial";
+  return a;
+}
+
+// --resume keeps only rows that are the grid points of their index.
+TEST(TableRowConsistency, ResumedRowOffTheGridIsRefused) {
+  const resume_attempt a =
+      resume_with_changed_row(R"({"laws": ["linear"], "gamma": [0.05, 0.1, 0.5], "g": 1, "digits": 20})",
+                              [](std::vector<std::string>& f) {
+                                f[4] = f[4] == "0.05" ? "0.07" : "0.05";  // a gamma of another row, or off the grid
+                              });
+  EXPECT_NE(a.resumed.status, 0);
+  EXPECT_NE(a.resumed.err.find("not the grid point"), std::string::npos) << a.resumed.err;
+  EXPECT_FALSE(a.output_written);
 }
 
 /// Makes the two shards of a small table from `spec_text` in a fresh folder (`command`:
@@ -114,8 +136,8 @@ struct merge_attempt {
   bool output_written = false;
 };
 
-merge_attempt merge_with_changed_row(const std::string& command, const std::string& spec_text, std::size_t column,
-                                     const std::string& value, const std::string& other_value) {
+merge_attempt merge_with_changed_field(const std::string& command, const std::string& spec_text, std::size_t column,
+                                       const std::function<std::string(const std::string&)>& change) {
   const scratch_dir scratch{"viscor_merge_grid"};
   EXPECT_FALSE(scratch.path.empty());
   const std::string dir = scratch.path.string(), spec = dir + "/spec.json";
@@ -132,13 +154,31 @@ merge_attempt merge_with_changed_row(const std::string& command, const std::stri
     in.close();
     std::vector<std::string> f = split(row);
     EXPECT_GT(f.size(), column);
-    if (f.size() > column) f[column] = f[column] == value ? other_value : value;
+    if (f.size() > column) f[column] = change(f[column]);
     std::ofstream(dir + "/s1.csv") << header << "\n" << join(f) << "\n" << rest;
   }
   merge_attempt a;
   a.merged = run_cli("table merge " + dir + "/s0.csv " + dir + "/s1.csv -o " + dir + "/all.csv");
   a.output_written = fs::exists(dir + "/all.csv");
   return a;
+}
+
+merge_attempt merge_with_changed_row(const std::string& command, const std::string& spec_text, std::size_t column,
+                                     const std::string& value, const std::string& other_value) {
+  return merge_with_changed_field(command, spec_text, column,
+                                  [&](const std::string& was) { return was == value ? other_value : value; });
+}
+
+// The decimal `text` with its fourth digit changed: every field stays well-formed and
+// as long as before, but the value is another one.
+std::string fourth_digit_changed(std::string text) {
+  int seen = 0;
+  for (char& c : text)
+    if (c >= '0' && c <= '9' && ++seen == 4) {
+      c = c == '9' ? '8' : static_cast<char>(c + 1);
+      break;
+    }
+  return text;
 }
 
 const char* const cor_spec = R"({"laws": ["linear"], "gamma": [0.05, 0.1, 0.5], "g": [0, 1], "digits": 20})";
@@ -172,6 +212,50 @@ TEST(TableRowConsistency, MergedThresholdRowOffTheGridIsRefused) {
   const merge_attempt a = merge_with_changed_row("table sticking", sticking_spec, 5, "0.07", "0.08");
   EXPECT_EQ(a.merged.status, 2) << a.merged.err;
   EXPECT_NE(a.merged.err.find("not the grid point"), std::string::npos) << a.merged.err;
+  EXPECT_FALSE(a.output_written);
+}
+
+// e and 1 - e are written apart, each to the row's certified digits: a row whose e was
+// changed in one digit no longer adds up to 1, and is refused wherever it is read (a
+// committed table, a resumed run, a merged shard), naming the file, line and field.
+TEST(TableRowConsistency, ChangedEThatNoLongerAddsUpIsRefused) {
+  std::ifstream in(std::string(VISCOR_SOURCE_DIR) + "/reference_data/cor_report_grid.csv");
+  std::string header, row;
+  std::getline(in, header), std::getline(in, row), std::getline(in, row);  // index 1: a rebound at gamma > 0
+  std::vector<std::string> f = split(row);
+  ASSERT_EQ(f.at(6), "rebound");
+  const auto read = [&](const std::string& text) {
+    try {
+      viscor::jobs::table_format{viscor::table_kind::cor, false}.parse(text, "t.csv");
+    } catch (const viscor::parse_error& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_EQ(read(header + "\n" + row + "\n"), "");  // as committed: it adds up
+  f[7] = fourth_digit_changed(f[7]);
+  const std::string why = read(header + "\n" + join(f) + "\n");
+  EXPECT_NE(why.find("t.csv:2: field one_minus_e: e + one_minus_e must be 1 within the row's"), std::string::npos) << why;
+}
+
+TEST(TableRowConsistency, ResumedRowWithAChangedEIsRefused) {
+  const resume_attempt a =
+      resume_with_changed_row(R"({"laws": ["tsuji"], "gamma": [0.05, 0.1, 0.5], "g": 1, "digits": 20})",
+                              [](std::vector<std::string>& f) {
+                                EXPECT_EQ(f[6], "rebound");
+                                f[7] = fourth_digit_changed(f[7]);
+                              });
+  EXPECT_EQ(a.resumed.status, 2) << a.resumed.err;
+  EXPECT_NE(a.resumed.err.find(a.partial + ":2: field one_minus_e: e + one_minus_e must be 1"), std::string::npos)
+      << a.resumed.err;
+  EXPECT_FALSE(a.output_written);
+}
+
+TEST(TableRowConsistency, MergedRowWithAChangedEIsRefused) {
+  const merge_attempt a = merge_with_changed_field("table", cor_spec, 7, fourth_digit_changed);
+  EXPECT_EQ(a.merged.status, 2) << a.merged.err;
+  EXPECT_NE(a.merged.err.find("s1.csv:2: field one_minus_e: e + one_minus_e must be 1"), std::string::npos)
+      << a.merged.err;
   EXPECT_FALSE(a.output_written);
 }
 

@@ -1,7 +1,9 @@
 /* viscor_surrogates.c: the coefficient of restitution e of a bead hitting a wall, as fast
  * double-precision surrogates of viscor's certified solutions, exported as self-contained
  * C99 by `viscor surrogate export --language c` (docs/surrogate.md, "Exporting to C").
- * Do not edit: export again. Needs only the C standard library (<math.h>, <float.h>);
+ * Do not edit: export again (the last line seals the file with the SHA-256 of the rest;
+ * an export replaces only a file whose seal still matches). Needs only the C standard
+ * library (<math.h>, <float.h>);
  * no allocation, no state written (every table is const): safe from any thread.
  *
  * SPDX-License-Identifier: MIT
@@ -198,7 +200,7 @@ static viscor_cor viscor_sg_stick(double e_squared) {
 viscor_cor viscor_cor_at(const viscor_surrogate* s, double gamma, double g) {
     viscor_cor v;
     double w = gamma, G, dissipated;
-    if (!(gamma >= 0 && gamma <= s->gamma_max && g >= s->g_min && g <= s->g_max)) { /* also NaN */
+    if (!s || !(gamma >= 0 && gamma <= s->gamma_max && g >= s->g_min && g <= s->g_max)) { /* also NaN */
         v.outcome = VISCOR_OUTSIDE_DOMAIN;
         v.e = NAN, v.one_minus_e = NAN, v.e_squared = NAN;
         return v;
@@ -232,7 +234,7 @@ viscor_outcome viscor_outcome_at(const viscor_surrogate* s, double gamma, double
 }
 
 double viscor_critical_gamma(const viscor_surrogate* s, double g) {
-    if (!(g >= s->g_min && g <= s->g_max)) return NAN;
+    if (!s || !(g >= s->g_min && g <= s->g_max)) return NAN;
     if (g <= s->g_split) return HUGE_VAL;
     return viscor_sg_critical_gamma_at(s, g, log(g));
 }
@@ -331,7 +333,7 @@ static double viscor_sg_solve(const viscor_sg_tree* tree, int x_free, double fix
 
 double viscor_gamma_for(const viscor_surrogate* s, double e_target, double g) {
     double dissipated, x, gc, top;
-    if (!(e_target >= 0.01 && e_target < 1) || !(g >= s->g_min && g <= s->g_max)) return NAN;
+    if (!s || !(e_target >= 0.01 && e_target < 1) || !(g >= s->g_min && g <= s->g_max)) return NAN;
     dissipated = (1 - e_target) * (1 + e_target);
     if (!(dissipated > 0)) return 0;
     if (g <= s->g_split) return viscor_sg_solve(&s->low_load, 1, g, dissipated, s->gamma_max);
@@ -344,33 +346,40 @@ double viscor_gamma_for(const viscor_surrogate* s, double e_target, double g) {
 /* ---- physical variables (core/scaling.hpp: the same expressions) ---- */
 
 double viscor_time_scale(const viscor_surrogate* s, double m, double k, double v0) {
-    const double alpha = s->alpha;
+    double alpha;
+    if (!s) return NAN;
+    alpha = s->alpha;
     return pow(m / k, 1 / (alpha + 1)) * pow(v0, (1 - alpha) / (alpha + 1));
 }
 
 double viscor_damping_scale(const viscor_surrogate* s, double m, double k, double v0) {
-    const double alpha = s->alpha, beta = s->beta;
+    double alpha, beta;
+    if (!s) return NAN;
+    alpha = s->alpha, beta = s->beta;
     return pow(v0, 2 * beta / (alpha + 1) - 1) * pow(k / m, 1 - beta / (alpha + 1));
 }
 
 double viscor_load_scale(const viscor_surrogate* s, double m, double k, double v0) {
-    const double alpha = s->alpha;
+    double alpha;
+    if (!s) return NAN;
+    alpha = s->alpha;
     return pow(m / k, 1 / (alpha + 1)) * pow(v0, -2 * alpha / (alpha + 1));
 }
 
 double viscor_scaled_g(const viscor_surrogate* s, double m, double k, double v0, double gravity, double force) {
     const double acceleration = gravity + force / m;
+    if (!(gravity >= 0)) return NAN;
     return viscor_load_scale(s, m, k, v0) * acceleration;
 }
 
 static int viscor_sg_valid_bead(double m, double k, double v0, double gravity, double force) {
-    return m > 0 && k > 0 && v0 > 0 && m <= DBL_MAX && k <= DBL_MAX && v0 <= DBL_MAX && gravity == gravity &&
+    return m > 0 && k > 0 && v0 > 0 && m <= DBL_MAX && k <= DBL_MAX && v0 <= DBL_MAX && gravity >= 0 &&
            force == force;
 }
 
 viscor_cor viscor_cor_physical(const viscor_surrogate* s, double m, double k, double gamma0, double v0,
                                double gravity, double force) {
-    if (!viscor_sg_valid_bead(m, k, v0, gravity, force) || !(gamma0 >= 0)) {
+    if (!s || !viscor_sg_valid_bead(m, k, v0, gravity, force) || !(gamma0 >= 0)) {
         viscor_cor v;
         v.outcome = VISCOR_OUTSIDE_DOMAIN;
         v.e = NAN, v.one_minus_e = NAN, v.e_squared = NAN;
@@ -381,7 +390,7 @@ viscor_cor viscor_cor_physical(const viscor_surrogate* s, double m, double k, do
 
 double viscor_damping_for(const viscor_surrogate* s, double e_target, double m, double k, double v0,
                           double gravity, double force) {
-    if (!viscor_sg_valid_bead(m, k, v0, gravity, force)) return NAN;
+    if (!s || !viscor_sg_valid_bead(m, k, v0, gravity, force)) return NAN;
     return viscor_gamma_for(s, e_target, viscor_scaled_g(s, m, k, v0, gravity, force)) /
            viscor_damping_scale(s, m, k, v0);
 }
@@ -8252,3 +8261,4 @@ const viscor_surrogate* viscor_surrogate_named(const char* law) {
     if (law && viscor_sg_names_equal(law, "hunt_crossley")) return &viscor_surrogate_hunt_crossley;
     return 0;
 }
+/* viscor sha256 cd16a7291f1ac0000aede28eced038dd5959e450cfae17f1c00a423071bc3d26 */

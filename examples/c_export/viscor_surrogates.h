@@ -1,7 +1,9 @@
 /* viscor_surrogates.h: the coefficient of restitution e of a bead hitting a wall, as fast
  * double-precision surrogates of viscor's certified solutions, exported as self-contained
  * C99 by `viscor surrogate export --language c` (docs/surrogate.md, "Exporting to C").
- * Do not edit: export again. Needs only the C standard library (<math.h>, <float.h>);
+ * Do not edit: export again (the last line seals the file with the SHA-256 of the rest;
+ * an export replaces only a file whose seal still matches). Needs only the C standard
+ * library (<math.h>, <float.h>);
  * no allocation, no state written (every table is const): safe from any thread.
  *
  * SPDX-License-Identifier: MIT
@@ -167,6 +169,9 @@ typedef struct viscor_surrogate {
 /* The surrogate of the law called `law` ("tsuji", ...), or a null pointer. */
 const viscor_surrogate* viscor_surrogate_named(const char* law);
 
+/* Every function below takes a null `s` as a point outside the domain: NaN, or the
+   outcome VISCOR_OUTSIDE_DOMAIN with NaN values. */
+
 /* ---- scaled variables ---- */
 
 /* e, 1 - e, e^2 and the outcome at (gamma, g). */
@@ -194,15 +199,18 @@ double viscor_time_scale(const viscor_surrogate* s, double m, double k, double v
 double viscor_damping_scale(const viscor_surrogate* s, double m, double k, double v0);
 /* g / (gravity + F/m) = (m/k)^(1/(alpha+1)) v0^(-2 alpha/(alpha+1)). */
 double viscor_load_scale(const viscor_surrogate* s, double m, double k, double v0);
-/* The scaled load g of gravity and the force F (N) towards the wall. */
+/* The scaled load g of gravity (m/s^2, >= 0: towards the wall) and the force F (N,
+   towards the wall; negative: away from it). NaN for a negative or NaN gravity. */
 double viscor_scaled_g(const viscor_surrogate* s, double m, double k, double v0, double gravity, double force);
-/* The impact of a bead (m > 0, k > 0, gamma0 >= 0, v0 > 0): e, 1 - e and the outcome
-   (VISCOR_OUTSIDE_DOMAIN, values NaN, for invalid inputs or outside the domain). */
+/* The impact of a bead (m > 0, k > 0, gamma0 >= 0, v0 > 0, gravity >= 0): e, 1 - e and
+   the outcome (VISCOR_OUTSIDE_DOMAIN, values NaN, for invalid inputs, such as a negative
+   gravity, or outside the domain). */
 viscor_cor viscor_cor_physical(const viscor_surrogate* s, double m, double k, double gamma0, double v0,
                                double gravity, double force);
 /* The damping coefficient gamma0 at which the bead rebounds with e_target
    (0.01 <= e_target < 1) under gravity and F: viscor_gamma_for at the scaled load,
-   divided by viscor_damping_scale. NaN if no gamma in the domain gives e_target. */
+   divided by viscor_damping_scale. NaN for invalid inputs (as viscor_cor_physical) or
+   if no gamma in the domain gives e_target. */
 double viscor_damping_for(const viscor_surrogate* s, double e_target, double m, double k, double v0,
                           double gravity, double force);
 
@@ -218,3 +226,4 @@ extern const viscor_surrogate viscor_surrogate_hunt_crossley; /* alpha = 3/2, be
 #endif
 
 #endif /* VISCOR_SURROGATES_H */
+/* viscor sha256 3ffc6dcd21cedc553ecc4564e9d036e91a75bbf8f065b10a584d2dc46980adf0 */

@@ -21,9 +21,15 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
+#include <cstdio>
+#include <initializer_list>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace py = pybind11;
 
@@ -152,7 +158,7 @@ using double_array = py::array_t<double, py::array::c_style | py::array::forceca
 // contact "pair", meeting a bead like it or the other_* one: absent arrays are
 // empty. Refuses the first bad point by its index.
 py::tuple scaled_arrays(const std::string& name, const std::string& alpha, const std::string& beta,
-                        const std::map<std::string, double_array>& columns, const std::string& contact) {
+                        const std::map<std::string, double_array>& columns, const std::string& contact, bool strict) {
   const contact_law law = jobs::resolve_law(name, alpha, beta);
   if (contact != "wall" && contact != "pair")
     throw invalid_parameter("evaluate: contact must be 'wall' or 'pair', got '" + contact + "'");
@@ -171,6 +177,25 @@ py::tuple scaled_arrays(const std::string& name, const std::string& alpha, const
   const double *wall_E = column("wall_youngs_modulus"), *wall_nu = column("wall_poisson_ratio"),
                *other_E = column("other_youngs_modulus"), *other_nu = column("other_poisson_ratio"),
                *other_radius = column("other_radius"), *other_density = column("other_density");
+  // Inputs far outside their quantity's range (a unit slip: cm/s for m/s) are warned
+  // about as cor warns (refused when strict), each at its most extreme points.
+  for (const auto& [key, quantity] : std::initializer_list<std::pair<const char*, physical_quantity>>{
+           {"youngs_modulus", physical_quantity::youngs_modulus}, {"density", physical_quantity::density},
+           {"radius", physical_quantity::radius}, {"v0", physical_quantity::speed},
+           {"gravity", physical_quantity::gravity}, {"wall_youngs_modulus", physical_quantity::youngs_modulus},
+           {"other_youngs_modulus", physical_quantity::youngs_modulus}, {"other_density", physical_quantity::density},
+           {"other_radius", physical_quantity::radius}}) {
+    const double* x = column(key);
+    if (!x || n == 0) continue;
+    const auto [lowest, highest] = std::minmax_element(x, x + n);
+    for (const double* extreme : {lowest, highest}) {
+      if (extreme == highest && *highest == *lowest) break;
+      char text[32];
+      std::snprintf(text, sizeof text, "%.17g", *extreme);
+      jobs::check_plausible_unit(quantity, std::string(text), "evaluate: " + std::string(key) + " (point " +
+                                     std::to_string(extreme - x) + ")", strict);
+    }
+  }
   py::array_t<double> gamma(n), g(n);
   double* pg = gamma.mutable_data();
   double* pgg = g.mutable_data();
@@ -243,6 +268,19 @@ py::object compare_formula(const std::string& law, const double_array& values, c
 
 }  // namespace
 
+// An output_lock that Python can release at the end of a with block.
+struct held_output_lock {
+  std::optional<jobs::output_lock> lock;
+};
+
+// The library's safe writer (jobs/files.hpp): [(path, text), ...] published together.
+void write_together(const std::vector<std::pair<std::string, std::string>>& files) {
+  std::vector<jobs::output_file> outputs;
+  for (const auto& [path, body] : files) outputs.push_back({path, body});
+  py::gil_scoped_release release;
+  jobs::write_together(outputs);
+}
+
 void bind_commands(py::module_& m) {
   m.def("exact", &exact, py::arg("name"), py::arg("alpha"), py::arg("beta"), py::arg("gamma"), py::arg("g"),
         py::arg("digits"), "The exact job (jobs/exact_job.hpp): the object of `viscor exact --json`.");
@@ -277,8 +315,25 @@ void bind_commands(py::module_& m) {
       },
       py::arg("inputs"), py::arg("output"),
       "Merges shard tables into one (jobs/table_jobs.hpp, as `viscor table merge`); returns its rows.");
+  py::class_<held_output_lock>(m, "OutputLock",
+                               "The library's lock on an output (jobs/files.hpp, output_lock: OUT.lock, held with\n"
+                               "flock while a job writes OUT): `with OutputLock(out):`; raises when another holds it.")
+      .def(py::init([](const std::string& output) {
+             auto held = std::make_unique<held_output_lock>();
+             held->lock.emplace(output);
+             return held;
+           }),
+           py::arg("output"))
+      .def("__enter__", [](held_output_lock& h) -> held_output_lock& { return h; }, py::return_value_policy::reference)
+      .def("__exit__", [](held_output_lock& h, const py::args&) {
+        h.lock.reset();
+        return false;
+      });
+  m.def("write_together", &write_together, py::arg("files"),
+        "Writes [(path, text), ...] as one command's outputs (jobs/files.hpp, write_together): each checked,\n"
+        "written to an exclusive temporary, then all renamed; a failure before the renames replaces nothing.");
   m.def("scaled_arrays", &scaled_arrays, py::arg("name"), py::arg("alpha"), py::arg("beta"), py::arg("columns"),
-        py::arg("contact") = "wall",
+        py::arg("contact") = "wall", py::arg("strict") = false,
         "Flat float64 arrays of physical inputs -> (gamma, g) arrays by the report's scaling, in double.");
 }
 

@@ -199,6 +199,12 @@ std::string table(const table_request& q) {
     if (PyErr_Occurred()) {  // interrupted from Python: raise that exception, with what was kept
       try {
         std::rethrow_exception(failure);
+      } catch (const jobs::table_interrupted& e) {
+        PyErr_Clear();
+        const std::string message = "interrupted: " + std::to_string(e.done) + " of " + std::to_string(e.total) +
+                                    " rows are done and kept in '" + e.partial +
+                                    "'; call table() again with the same arguments and resume=True to continue";
+        PyErr_SetString(PyExc_KeyboardInterrupt, message.c_str());
       } catch (const std::exception& e) {
         PyErr_Clear();
         PyErr_SetString(PyExc_KeyboardInterrupt, e.what());

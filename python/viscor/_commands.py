@@ -14,7 +14,7 @@ import subprocess
 
 from . import _viscor
 from ._viscor import InvalidParameter
-from ._inputs import check_digits, law_texts, number_text
+from ._inputs import check_digits, law_texts, number_text, spec_json
 from ._result import Result
 from ._table import Table
 
@@ -197,7 +197,10 @@ def table(spec, out, *, resume=False, shard=None, threads=None, quiet=True, stic
     """A certified reference table from a grid spec (the table job, as ``viscor table
     SPEC -o OUT``, docs/tables.md): writes OUT (CSV) and OUT.json (its sidecar).
 
-    spec: a spec file's path, or the spec as a dict (the file's JSON). Returns a Table:
+    spec: a spec file's path, or the spec as a dict (the file's JSON; its numbers may be
+    int, float, Decimal, Fraction or NumPy scalars, read as viscor.cor reads them: a
+    float is its exact binary value, so write '0.1' or Decimal('0.1') for the decimal).
+    Returns a Table:
     the path OUT (a str, as before) with the table's columns as NumPy arrays
     (``t.column('e')``) and as exact decimal strings (``t.strings('e')``).
     sticking=True computes sticking thresholds (``viscor table sticking``). The work
@@ -205,7 +208,7 @@ def table(spec, out, *, resume=False, shard=None, threads=None, quiet=True, stic
     call again with resume=True to finish."""
     q = _viscor.TableRequest()
     if isinstance(spec, dict):
-        q.spec_text = json.dumps(spec)
+        q.spec_text = spec_json(spec)
         q.spec_name = "<spec dict>"
     else:
         q.spec_name = os.fspath(spec)

@@ -30,7 +30,7 @@ def _committed_surrogate(name):
     return _committed_surrogates[key]
 
 
-def _scaled_from_physical(name, a, b, tol, physical):
+def _scaled_from_physical(name, a, b, tol, physical, strict):
     """(gamma, g, tol) arrays from arrays of physical inputs, broadcast together."""
     import numpy as np
 
@@ -72,7 +72,7 @@ def _scaled_from_physical(name, a, b, tol, physical):
                                        + ")") from error
     shape = broadcast[0].shape
     columns = {k: np.ascontiguousarray(x).reshape(-1) for k, x in zip(names, broadcast[:-1])}
-    gamma, g = _viscor.scaled_arrays(name, a, b, columns, contact)
+    gamma, g = _viscor.scaled_arrays(name, a, b, columns, contact, strict)
     return gamma.reshape(shape), g.reshape(shape), broadcast[-1]
 
 
@@ -83,7 +83,7 @@ _PHYSICAL = ("m", "k", "v0", "gamma0", "gravity", "force", "youngs_modulus", "po
 
 
 def evaluate(law=None, gamma=None, g=0.0, tol=1e-6, *, alpha=None, beta=None, relative=False, error_maps="default",
-             surrogate="default", threads=0, **physical):
+             surrogate="default", threads=0, strict=False, **physical):
     """e with an empirical error bound <= tol at every point, over arrays.
 
     gamma, g, tol: array-likes of float64, broadcast together (NumPy rules). Each
@@ -103,7 +103,9 @@ def evaluate(law=None, gamma=None, g=0.0, tol=1e-6, *, alpha=None, beta=None, re
     (required: 0 for none) and force (default 0); a wall of its own material
     (wall_youngs_modulus, wall_poisson_ratio), or contact='pair' (a second bead
     like the first, or other_youngs_modulus, other_poisson_ratio, other_radius,
-    other_density; gravity drops out). They are scaled in double.
+    other_density; gravity drops out). They are scaled in double. Inputs far
+    outside their quantity's range (a unit slip) are warned about on stderr as
+    viscor.cor warns, naming the point; strict=True refuses them.
 
     Raises InvalidParameter naming the first bad point (NaN, gamma < 0, ...).
     """
@@ -118,7 +120,9 @@ def evaluate(law=None, gamma=None, g=0.0, tol=1e-6, *, alpha=None, beta=None, re
         if gamma is not None:
             raise _viscor.InvalidParameter("evaluate: give either the physical inputs (" + ", ".join(physical) +
                                            ") or the scaled gamma and g, not both")
-        gamma, g, tol = _scaled_from_physical(name, a, b, tol, physical)
+        if not isinstance(strict, bool):
+            raise TypeError(f"strict must be True or False, got {strict!r}")
+        gamma, g, tol = _scaled_from_physical(name, a, b, tol, physical, strict)
     if gamma is None:
         raise TypeError("evaluate() needs gamma")
     arrays = []

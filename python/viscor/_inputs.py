@@ -2,6 +2,7 @@
 
 import decimal
 import fractions
+import json
 import numbers
 
 from ._viscor import InvalidParameter, PrecisionUnavailable, max_working_digits
@@ -85,3 +86,27 @@ def check_digits(digits):
         raise PrecisionUnavailable(f"requested precision digits = {digits} exceeds the maximum of "
                                    f"{max_working_digits}")
     return digits
+
+
+def spec_json(spec, where="spec"):
+    """A table spec given as a dict, as the JSON text the library reads: numbers as
+    number_text writes them (an int as itself; a float as its exact binary value, as
+    viscor.cor reads it; a Decimal or a NumPy integer or float64 exactly; a Fraction
+    p/q that is not a terminating decimal as the string "p/q"), so that a spec means
+    the same numbers in every call. `where` names the field in errors."""
+    if isinstance(spec, dict):
+        items = []
+        for key, value in spec.items():
+            if not isinstance(key, str):
+                raise TypeError(f"{where}: keys must be strings, got {key!r}")
+            items.append(json.dumps(key) + ": " + spec_json(value, f"{where}.{key}"))
+        return "{" + ", ".join(items) + "}"
+    if isinstance(spec, (list, tuple)):
+        return "[" + ", ".join(spec_json(v, f"{where}[{i}]") for i, v in enumerate(spec)) + "]"
+    if spec is None or isinstance(spec, (str, bool)):
+        return json.dumps(spec)
+    if isinstance(spec, numbers.Number):
+        text = number_text(spec, where)
+        return json.dumps(text) if "/" in text else text
+    raise TypeError(f"{where} must be a JSON value (dict, list, str, number, bool or None), got "
+                    f"{type(spec).__name__} ({spec!r})")

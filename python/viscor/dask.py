@@ -18,18 +18,32 @@ Dask retries a failed task (``retries``) before giving up.
 
 import json
 import os
+import re
 import tempfile
+import warnings
 
 from . import _viscor
 from ._commands import Points, cor_points as _cor_points, table as _table
 from ._evaluate import Evaluation, evaluate as _evaluate
+from ._inputs import spec_json
 from ._result import Result
 from ._table import Table
 
 
+def _scratch_root():
+    """Where a task keeps its scratch files: the worker's own local directory, which
+    Dask removes when the worker's process is gone (also after a kill), so a killed
+    task leaves no folder behind; the system's temporary directory outside a worker."""
+    try:
+        from distributed import get_worker
+        return get_worker().local_directory
+    except (ImportError, ValueError):
+        return None
+
+
 def _shard_task(spec_text, index, count, sticking):
     """On a worker: one shard of the table in a scratch directory; returns its files' text."""
-    with tempfile.TemporaryDirectory(prefix="viscor-shard-") as scratch:
+    with tempfile.TemporaryDirectory(prefix="viscor-shard-", dir=_scratch_root()) as scratch:
         out = os.path.join(scratch, f"shard-{index}-of-{count}.csv")
         _table(json.loads(spec_text), out, shard=(index, count), threads=1, sticking=sticking)
         with open(out) as f:
@@ -39,9 +53,32 @@ def _shard_task(spec_text, index, count, sticking):
     return index, csv_text, sidecar_text
 
 
+_SHARD_FILE = re.compile(r"shard-(\d+)-of-(\d+)\.csv(\.json)?(\.tmp\.\d+)?$")
+
+
+def _keep_only_this_split(kept, shards):
+    """The shards folder of an earlier call may hold shards of another count, and the
+    temporaries of a call killed while it wrote one (no other call is writing: this one
+    holds the folder's lock): both are discarded, with a warning, never mixed in.
+    Anything else in it is not ours: refused."""
+    stale = []
+    for name in sorted(os.listdir(kept)):
+        match = _SHARD_FILE.match(name)
+        if match is None:
+            raise _viscor.Error(f"'{os.path.join(kept, name)}' is not a shard viscor.dask.table wrote; the folder "
+                                f"'{kept}' holds only finished shards: remove it, or choose another output")
+        if int(match.group(2)) != shards or match.group(4):
+            stale.append(name)
+    if stale:
+        warnings.warn(f"viscor.dask.table: discarding {len(stale)} files in '{kept}' of shards of another count or "
+                      f"left by a killed call (this call splits the table into {shards})", stacklevel=3)
+        for name in stale:
+            os.remove(os.path.join(kept, name))
+
+
 def _spec_text(spec):
     if isinstance(spec, dict):
-        return json.dumps(spec)
+        return spec_json(spec)  # numbers as viscor.table reads them
     with open(os.fspath(spec)) as f:
         return f.read()
 
@@ -52,7 +89,10 @@ def table(spec, out, client, *, shards=None, sticking=False, retries=2):
 
     shards: the number of shards (default: 4 per worker). Finished shards are kept in
     the directory `out + '.shards'` until the merge succeeds; calling again with the
-    same arguments computes only the missing ones. Returns a Table (as viscor.table).
+    same arguments computes only the missing ones (with another shard count, the old
+    shards are discarded with a warning). The call holds the lock of that directory
+    (a second call on the same output stops at once) and the merge holds out's lock,
+    as `viscor table merge` does. Returns a Table (as viscor.table).
     """
     from distributed import as_completed
 
@@ -65,19 +105,21 @@ def table(spec, out, client, *, shards=None, sticking=False, retries=2):
     out = os.fspath(out)
     kept = out + ".shards"
     os.makedirs(kept, exist_ok=True)
-    paths = [os.path.join(kept, f"shard-{i}-of-{shards}.csv") for i in range(shards)]
-    missing = [i for i in range(shards) if not (os.path.exists(paths[i]) and os.path.exists(paths[i] + ".json"))]
-    futures = [client.submit(_shard_task, text, i, shards, sticking, retries=retries, pure=False) for i in missing]
-    for future in as_completed(futures):
-        index, csv_text, sidecar_text = future.result()
-        for path, body in ((paths[index] + ".json", sidecar_text), (paths[index], csv_text)):
-            with open(path + ".tmp", "w") as f:
-                f.write(body)
-            os.replace(path + ".tmp", path)  # the CSV last: a shard counts once both are there
-    _viscor.merge_tables(paths, out)
-    for path in paths:
-        for p in (path, path + ".json"):
-            os.remove(p)
+    with _viscor.OutputLock(kept):  # one call at a time on these shards; the merge takes out's own lock
+        with _viscor.OutputLock(out):  # before any task: stop now if a table run or a merge is writing out
+            pass
+        _keep_only_this_split(kept, shards)
+        paths = [os.path.join(kept, f"shard-{i}-of-{shards}.csv") for i in range(shards)]
+        missing = [i for i in range(shards) if not (os.path.exists(paths[i]) and os.path.exists(paths[i] + ".json"))]
+        futures = [client.submit(_shard_task, text, i, shards, sticking, retries=retries, pure=False) for i in missing]
+        for future in as_completed(futures):
+            index, csv_text, sidecar_text = future.result()
+            # both or neither, through the library's writer (exclusive temporaries, checked writes)
+            _viscor.write_together([(paths[index] + ".json", sidecar_text), (paths[index], csv_text)])
+        _viscor.merge_tables(paths, out)
+        for path in paths:
+            for p in (path, path + ".json"):
+                os.remove(p)
     os.rmdir(kept)
     return Table(out)
 

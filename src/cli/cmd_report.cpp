@@ -13,16 +13,12 @@ namespace {
 
 void write_report(const report_request& q) {
   const report_output r = make_report(q);
-  if (!q.values.empty()) {
-    output_options::write_atomically(q.values, r.values_csv);
-    output_options::say_written(q.values, r.values_csv);
-  }
-  if (q.output.empty()) {
-    std::cout << r.text << std::flush;
-  } else {
-    output_options::write_atomically(q.output, r.text);
-    output_options::say_written(q.output, r.text);
-  }
+  std::vector<jobs::output_file> files;
+  if (!q.values.empty()) files.push_back({q.values, r.values_csv});
+  if (!q.output.empty()) files.push_back({q.output, r.text});
+  jobs::write_together(files);  // the values and the report together, or neither
+  for (const auto& f : files) output_options::say_written(f.path, f.body);
+  if (q.output.empty()) std::cout << r.text << std::flush;
 }
 
 void write_baseline(const baseline_request& q) {

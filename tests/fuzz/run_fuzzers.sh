@@ -27,7 +27,7 @@ build=$(cd "$1" && pwd)
 seconds=$2
 shift 2
 names=("$@")
-[ ${#names[@]} -gt 0 ] || names=(decimal law table_spec scene points table_csv proven_table surrogate dem)
+[ ${#names[@]} -gt 0 ] || names=(decimal law table_spec scene points table_csv proven_table surrogate dem manifest formula_values)
 scratch=$(mktemp -d "${TMPDIR:-/tmp}/viscor-fuzz.XXXXXX")
 
 # CPU seconds (user + system, all threads) a process has used so far.

@@ -4,6 +4,7 @@ here, the committed certified tables, and the CLI binary's output for the same
 command (another front end, the same files)."""
 
 import decimal
+import fractions
 import json
 import math
 import os
@@ -12,6 +13,7 @@ import tempfile
 import unittest
 
 import viscor
+from viscor._inputs import spec_json
 from viscor_test_support import (CLI, REFERENCE_DATA, SOURCE_DIR, linear_law_e, mpmath, numpy as np, reference_rows,
                                  skip_or_fail)
 
@@ -234,7 +236,7 @@ class TableJobSameAsTheCli(unittest.TestCase):
     def cli_table(self, tmp, spec):
         path = os.path.join(tmp, "spec.json")
         with open(path, "w") as f:
-            json.dump(spec, f)
+            f.write(spec_json(spec))  # the spec's numbers as viscor.table reads them (floats exactly)
         out = os.path.join(tmp, "cli.csv")
         subprocess.run([CLI, "table", path, "-o", out, "--quiet"], check=True)
         with open(out, "rb") as f:
@@ -254,6 +256,18 @@ class TableJobSameAsTheCli(unittest.TestCase):
             self.assertEqual(t.column("law")[:1], ["linear"])
             self.assertEqual(t.sidecar["rows_total"], 20)
 
+    def test_dict_numbers_are_read_as_cor_reads_them(self):
+        spec = {"laws": ["tsuji"], "gamma": [decimal.Decimal("0.05"), fractions.Fraction(1, 10), np.float64(0.2), 0.3],
+                "g": [np.int64(0)], "digits": 20}
+        with tempfile.TemporaryDirectory() as tmp:
+            t = viscor.table(spec, os.path.join(tmp, "py.csv"), threads=1)
+            # a float is its exact binary value (Decimal(float) is exact), as viscor.cor takes it
+            self.assertEqual(list(t.strings("gamma")), ["0.05", "0.1", str(decimal.Decimal(0.2)), str(decimal.Decimal(0.3))])
+            with self.assertRaisesRegex(viscor.InvalidParameter, r"spec\.gamma\[0\]"):
+                viscor.table(dict(spec, gamma=[float("nan")]), os.path.join(tmp, "nan.csv"))
+            with self.assertRaisesRegex(TypeError, r"spec\.gamma\[0\]"):
+                viscor.table(dict(spec, gamma=[np.float32(0.5)]), os.path.join(tmp, "f32.csv"))
+
     def test_interrupted_then_resumed(self):
         import _thread
         import threading
@@ -269,7 +283,8 @@ class TableJobSameAsTheCli(unittest.TestCase):
                     viscor.table(spec, out, threads=1)
             finally:
                 timer.cancel()
-            self.assertIn("--resume", str(caught.exception))
+            self.assertIn("resume=True", str(caught.exception))
+            self.assertNotIn("--resume", str(caught.exception))  # Python's spelling, not the CLI's
             self.assertTrue(os.path.exists(out + ".partial"))
             self.assertFalse(os.path.exists(out))
             t = viscor.table(spec, out, threads=2, resume=True)

@@ -5,6 +5,8 @@ results, which are themselves checked against the exact values."""
 
 import math
 import os
+import subprocess
+import sys
 import tempfile
 import threading
 import unittest
@@ -191,6 +193,29 @@ class SurrogatePlumbing(unittest.TestCase):
 
 
 @unittest.skipIf(np is None, "needs NumPy (python3-numpy)")
+class PhysicalUnits(unittest.TestCase):
+    """Physical inputs far outside their range are warned about as viscor.cor warns
+    (on stderr, naming the point), and refused with strict=True."""
+
+    BEAD = dict(m=2.05e-3, k=6.9716e9, gamma0=1e-6, gravity=9.81)
+
+    def setUp(self):
+        if np is None:
+            skip_or_fail(self, "numpy")
+
+    def test_a_speed_in_cm_per_s_is_warned_about_and_refused_when_strict(self):
+        code = ("import viscor, numpy as np\n"
+                f"viscor.evaluate('kuwabara_kono', v0=np.array([0.5, 50000.0]), **{self.BEAD!r})\n")
+        run = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+        self.assertEqual(run.returncode, 0, run.stderr)
+        self.assertIn("viscor: warning: evaluate: v0 (point 1) 50000 m/s is above", run.stderr)
+        plain = subprocess.run([sys.executable, "-c", code.replace("50000.0", "0.7")], capture_output=True, text=True)
+        self.assertEqual(plain.returncode, 0, plain.stderr)
+        self.assertNotIn("warning", plain.stderr)
+        with self.assertRaisesRegex(viscor.InvalidParameter, r"v0 \(point 1\) 50000 m/s"):
+            viscor.evaluate("kuwabara_kono", v0=np.array([0.5, 50000.0]), strict=True, **self.BEAD)
+
+
 class ThreadSafety(unittest.TestCase):
     def test_concurrent_calls_equal_the_serial_run(self):
         rng = np.random.default_rng(16)

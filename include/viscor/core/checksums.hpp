@@ -10,6 +10,7 @@
 #include <viscor/core/exceptions.hpp>
 #include <viscor/core/sha256.hpp>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <fcntl.h>
@@ -50,34 +51,52 @@ struct checksum_entry {
   std::string name;    ///< the file's name in the manifest's directory
 };
 
-/// The manifest beside `file` (empty when there is none). Reads what sha256sum writes,
-/// on any platform: CRLF line ends, the binary-mode mark ("<sha256> *<name>") and names
+/// The entries of a manifest's text (`manifest` names it in messages). Reads what
+/// sha256sum writes, on any platform: CRLF line ends, the binary-mode mark ("<sha256> *<name>") and names
 /// given as "./name" (the same file). Throws parse_error naming the manifest and the
 /// line when a line is not "<64 hex digits>  <name>", when a name is not a file of the
-/// manifest's own directory (a path, or empty), and when a name is listed twice: a
+/// manifest's own directory (a path, empty, or holding a control character such as a
+/// stray CR), and when a name is listed twice: a
 /// line that cannot be read is refused, never ignored.
-inline std::vector<checksum_entry> read_checksum_manifest(const std::filesystem::path& file) {
-  const std::filesystem::path manifest = file.parent_path() / checksum_manifest_name;
-  std::ifstream in(manifest, std::ios::binary);
+inline std::vector<checksum_entry> parse_checksum_manifest(const std::string& text, const std::string& manifest) {
   std::vector<checksum_entry> entries;
-  if (!in) return entries;
+  std::istringstream in(text);
   std::string line;
   for (int number = 1; std::getline(in, line); ++number) {
     if (!line.empty() && line.back() == '\r') line.pop_back();
     if (line.empty()) continue;
-    const std::string where = manifest.string() + ":" + std::to_string(number) + ": ";
+    const std::string where = manifest + ":" + std::to_string(number) + ": ";
     const bool hex = line.size() > 66 && line.find_first_not_of("0123456789abcdef") == 64 &&
                      (line.compare(64, 2, "  ") == 0 || line.compare(64, 2, " *") == 0);
     if (!hex) throw parse_error(where + "not a checksum line ('<sha256>  <name>')");
     std::string name = line.substr(66);
     if (name.rfind("./", 0) == 0) name.erase(0, 2);
-    if (name.empty() || name.find('/') != std::string::npos || name == "." || name == "..")
+    const bool control = std::any_of(name.begin(), name.end(), [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; });
+    if (name.empty() || name.find('/') != std::string::npos || name == "." || name == ".." || control)
       throw parse_error(where + "'" + name.substr(0, 80) + "' is not the name of a file in the manifest's directory");
     for (const checksum_entry& e : entries)
       if (e.name == name) throw parse_error(where + "'" + name + "' is listed twice");
     entries.push_back({line.substr(0, 64), name});
   }
   return entries;
+}
+
+/// The manifest beside `file` (empty when there is none), read and parsed
+/// (parse_checksum_manifest, whose rules it follows).
+inline std::vector<checksum_entry> read_checksum_manifest(const std::filesystem::path& file) {
+  const std::filesystem::path manifest = file.parent_path() / checksum_manifest_name;
+  std::error_code ec;
+  const std::filesystem::file_status status = std::filesystem::status(manifest, ec);
+  if (status.type() == std::filesystem::file_type::not_found) return {};
+  if (ec) throw parse_error("cannot read the checksum manifest '" + manifest.string() + "': " + ec.message());
+  if (status.type() != std::filesystem::file_type::regular)  // a FIFO would hang the read
+    throw parse_error("the checksum manifest '" + manifest.string() + "' is not a regular file");
+  std::ifstream in(manifest, std::ios::binary);
+  if (!in) throw parse_error("cannot read the checksum manifest '" + manifest.string() + "'");
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw parse_error("reading the checksum manifest '" + manifest.string() + "' failed");
+  return parse_checksum_manifest(text.str(), manifest.string());
 }
 
 /// Whether the manifest beside `file` lists it: a file of committed data.

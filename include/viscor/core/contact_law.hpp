@@ -14,6 +14,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 
 namespace viscor {
 
@@ -150,6 +151,12 @@ class exponent {
 /// integers Q alpha, Q beta (u = s^Q turns u^alpha, u^beta into powers of s).
 struct exponent_multiples {
   std::int64_t Q = 1, Q_alpha = 1, Q_beta = 1;
+
+  /// The largest Q, and the largest Q alpha and Q beta, for which the end points are
+  /// solved in u = s^Q: its series hold Q (alpha + 1) terms per power of the step.
+  static constexpr std::int64_t max_Q = 64, max_Q_exponent = 512;
+  /// Whether Q, Q alpha and Q beta are within those caps.
+  bool fit_root_variable() const noexcept { return Q <= max_Q && Q_alpha <= max_Q_exponent && Q_beta <= max_Q_exponent; }
 };
 
 /// Exponents (alpha, beta) of the contact law; alpha, beta >= 1 (Assumption 1).
@@ -194,6 +201,23 @@ struct contact_law {
     m.Q_alpha = checked_product(m.Q / alpha.denominator(), alpha.numerator(), named("Q alpha"));
     m.Q_beta = checked_product(m.Q / beta.denominator(), beta.numerator(), named("Q beta"));
     return m;
+  }
+
+  /// Why the proof (enclose/proven_impact.hpp) cannot take this law, or "" when it can:
+  /// it solves the end points in u = s^Q, so it needs rational exponents whose
+  /// multiples fit that variable (exponent_multiples::fit_root_variable).
+  std::string why_not_provable() const {
+    for (const auto& [what, x] : {std::pair<const char*, const exponent*>{"alpha", &alpha}, {"beta", &beta}})
+      if (!x->is_rational())
+        return "not provable: exponent " + std::string(what) + " = " + x->to_string() +
+               " is not rational (the proof needs u = s^Q at the end points)";
+    const exponent_multiples m = multiples();
+    if (!m.fit_root_variable())
+      return "not provable: alpha = " + alpha.to_string() + ", beta = " + beta.to_string() + " need u = s^Q with Q = " +
+             std::to_string(m.Q) + ", Q alpha = " + std::to_string(m.Q_alpha) + ", Q beta = " + std::to_string(m.Q_beta) +
+             "; the proof takes Q <= " + std::to_string(exponent_multiples::max_Q) + " and Q alpha, Q beta <= " +
+             std::to_string(exponent_multiples::max_Q_exponent);
+    return "";
   }
 
   /// "kuwabara_kono (alpha=3/2, beta=3/2)" or "alpha=1.3, beta=17/10".

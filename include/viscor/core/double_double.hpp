@@ -8,8 +8,8 @@
 // arithmetic", ACM TOMS 44(2), 2017, for the algorithms QD implements; none is
 // correctly rounded):
 //   a + b, a - b   Briggs-Kahan addition (QD's ieee_add; QD's default "sloppy" add has
-//                  no relative bound under cancellation and is never used here):
-//                  relative error <= 3u^2 / (1 - 4u)
+//                  no relative bound under cancellation and is never used by these
+//                  operators): relative error <= 3u^2 / (1 - 4u)
 //   a * b          QD's product (exact partial product by Dekker's split, or by FMA
 //                  where the compiler targets it): <= 7u^2
 //   a / b          QD's division: <= 15u^2 + 56u^3
@@ -17,10 +17,15 @@
 // (+ - * / are QD's algorithms written out in detail::dd_kernels, so that they inline),
 // so every + - * / is within 16u^2 = 2^-102 = 2 epsilon relative (epsilon = 2^-103,
 // digits = 104 as QD's own numeric_limits says): 31 decimal digits
-// (decimal_digits_of_binary(104)). QD states no bound for sqrt, exp and log (one Newton
-// step from the double result); tests/double_double_test.cpp measures them against
-// MPFR (and holds sqrt within 2, exp and log within 4, pow within 8 epsilon). pow is
-// computed here (not QD's exp(b log a)), so that its error does not grow with |b log a|.
+// (decimal_digits_of_binary(104)). QD's own functions (sqrt, exp, log, sin, npwr, compiled
+// into libqd) use its sloppy add inside and come with no stated bound: for them nothing
+// is proved. tests/double_double_test.cpp measures them against MPFR at chosen points
+// (sqrt within 2, exp and log within 4 epsilon) and they are trusted no further. pow(x, y)
+// is computed here as 2^j exp(f ln 2 + y ln m), so that its error does not grow with
+// |ln x|; it still grows with |y| (exp's relative error is about its argument's absolute
+// error): measured within 8 epsilon for the solvers' exponents (|y| <= 7/2), no bound for
+// large |y|. log1p and expm1 are computed here from series (QD's log near 1 keeps only
+// its absolute accuracy): measured within 2 epsilon, down to arguments of 1e-30.
 // Certification's agreement rule catches what these rules miss.
 //
 // Limits: the exponent range is double's, and the lo part is an ordinary double, so a
@@ -477,18 +482,57 @@ inline double_double exp(const double_double& x) { return double_double(exp(x.qd
 inline double_double log(const double_double& x) { return double_double(log(x.qd())); }
 /// Decimal logarithm (QD).
 inline double_double log10(const double_double& x) { return double_double(log10(x.qd())); }
-/// ln(1 + x), accurate for small |x| (ln(w) x / (w - 1) with w = 1 + x rounded).
-inline double_double log1p(const double_double& x) {
-  const double_double w = 1 + x;
-  if (w == 1) return x;
-  return log(w) * (x / (w - 1));
+namespace detail {
+// NOTE: QD's log is one Newton step from the double logarithm, exact to about 2^-104
+// absolutely, so near 1 its relative error grows like 2^-104 / |ln w| (16 digits left at
+// w = 1 + 1e-16): log1p and expm1 therefore never take the logarithm of a number near
+// 1; they sum series in which every term is small against the first.
+
+// 2 atanh(s) = 2 (s + s^3/3 + s^5/5 + ...), |s| <= 1/3: every term adds, none cancels.
+inline double_double twice_atanh_series(const double_double& s) {
+  const double_double s2 = s * s;
+  double_double term = s, sum = s;
+  for (int k = 3; k < 200; k += 2) {
+    term = term * s2;
+    const double_double next = sum + term / double_double(k);
+    if (next == sum) break;
+    sum = next;
+  }
+  return 2 * sum;
 }
-/// e^x - 1, accurate for small |x| ((w - 1) x / ln(w) with w = e^x rounded).
+
+// e^x - 1 = x + x^2/2! + ... for |x| <= 1/16 (each term at most 1/32 of the one before).
+inline double_double expm1_series(const double_double& x) {
+  double_double term = x, sum = x;
+  for (int k = 2; k < 40; ++k) {
+    term = term * x / double_double(k);
+    const double_double next = sum + term;
+    if (next == sum) break;
+    sum = next;
+  }
+  return sum;
+}
+}  // namespace detail
+
+/// ln(1 + x) with its relative digits for every x > -1: 2 atanh(x / (2 + x)) where
+/// that is at most 1/3 (-1/2 <= x <= 1), else ln(1 + x) (|ln(1 + x)| > 0.69, where
+/// log's absolute error is relative too).
+inline double_double log1p(const double_double& x) {
+  if (x == 0 || !isfinite(x)) return x == 0 ? x : log(1 + x);
+  if (x.hi() >= -0.5 && x.hi() <= 1) return detail::twice_atanh_series(x / (2 + x));
+  return log(1 + x);
+}
+/// e^x - 1 with its relative digits: for |x| <= 1/2, the series at x / 2^k (|x / 2^k|
+/// <= 1/16), then k <= 3 doublings e^2y - 1 = m (m + 2) with m = e^y - 1 (|m| < 1, so
+/// m + 2 > 1 cancels nothing); else e^x - 1 (|e^x - 1| > 0.39).
 inline double_double expm1(const double_double& x) {
-  if (fabs(x.hi()) > 0.5) return exp(x) - 1;
-  const double_double w = exp(x);
-  if (w == 1) return x;
-  return (w - 1) * (x / log(w));
+  if (x == 0 || !isfinite(x) || std::fabs(x.hi()) > 0.5) return x == 0 ? x : exp(x) - 1;
+  int halvings = 0;
+  double_double y = x;
+  while (std::fabs(y.hi()) > 0.0625) y = ldexp(y, -1), ++halvings;  // at most 3
+  double_double m = detail::expm1_series(y);
+  for (int k = 0; k < halvings; ++k) m = m * (m + 2);
+  return m;
 }
 /// Sine (QD).
 inline double_double sin(const double_double& x) { return double_double(sin(x.qd())); }

@@ -13,6 +13,7 @@
 #endif
 
 #include <string>
+#include <type_traits>
 
 namespace viscor {
 
@@ -32,6 +33,20 @@ inline std::string to_string(scalar_kind k) {
     case scalar_kind::mpfr: return "mpfr";
   }
   return "?";
+}
+
+/// The scalar_kind of the type Real.
+template <class Real>
+constexpr scalar_kind scalar_kind_of() {
+  if constexpr (std::is_same_v<Real, double>) return scalar_kind::double_;
+  else if constexpr (std::is_same_v<Real, long double>) return scalar_kind::long_double;
+#if VISCOR_HAS_QD
+  else if constexpr (std::is_same_v<Real, double_double>) return scalar_kind::double_double;
+#endif
+#if VISCOR_HAS_FLOAT128
+  else if constexpr (std::is_same_v<Real, quad>) return scalar_kind::quad;
+#endif
+  else return scalar_kind::mpfr;
 }
 
 /// Throws precision_unavailable unless the build can compute with `digits` digits.

@@ -413,14 +413,12 @@ class impact_proof {
 
 /// Proves the impact of `law` (rational exponents) at (gamma, g), given as exact
 /// decimals, with balls of working_bits(digits) bits. Throws invalid_parameter for a
-/// law that is not rational ("not provable"), gamma < 0, or an input that is not a
-/// finite decimal.
+/// law the proof cannot take ("not provable": contact_law::why_not_provable), gamma < 0,
+/// or an input that is not a finite decimal.
 inline proven_impact prove_impact(const contact_law& law, std::string_view gamma_text, std::string_view g_text,
                                   int digits, const proof_options& options = {}) {
   law.validate();
-  if (!law.alpha.is_rational() || !law.beta.is_rational())
-    throw invalid_parameter("not provable: the exponents of " + law.describe() +
-                            " are not rational (the end points need u = s^Q)");
+  if (const std::string why = law.why_not_provable(); !why.empty()) throw invalid_parameter(why + "; use certify for this law");
   if (digits < 5 || digits > 100000) throw invalid_parameter("digits must be in [5, 100000], got " + std::to_string(digits));
   scoped_ball_bits bits(working_bits(digits));
   return detail::impact_proof(detail::make_ball_constants(law, gamma_text, g_text), options).run();

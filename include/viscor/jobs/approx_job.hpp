@@ -106,7 +106,7 @@ struct approx_job : approx_request {
       j["law"] = law_json(model);
       j["gamma"] = number(gamma_value);
       j["g"] = number(g_value);
-      j["precision"] = scalar_json<Real>();
+      j["precision"] = scalar_json<Real>(digits);
       j["chebyshev_order"] = order;
       json closed;
       closed["I0"] = number(c.I0), closed["Q0"] = number(c.Q0), closed["dI_dg0"] = number(c.dI_dg0);

@@ -138,7 +138,7 @@ inline command_output calibrate_by_solving(const calibrate_request& q, bool is_p
     j[field::gamma_lo] = number(r.gamma_lo);
     j[field::gamma_hi] = number(r.gamma_hi);
     j[field::solves] = r.solves;
-    j["precision"] = scalar_json<Real>();
+    j["precision"] = scalar_json<Real>(q.digits);
     j[field::seconds] = seconds;
     text << "gamma      " << number(r.gamma) << " (scaled)\n"
          << "g          " << number(r.g) << " (scaled load)\n"

@@ -101,10 +101,7 @@ namespace detail {
 inline void check_provable(const contact_law& law, bool is_physical) {
   if (is_physical)
     throw invalid_parameter("--prove needs the scaled --gamma and --g (exact decimals), not physical inputs");
-  for (const auto& [name, x] : {std::pair<const char*, const exponent*>{"alpha", &law.alpha}, {"beta", &law.beta}})
-    if (!x->is_rational())
-      throw invalid_parameter("not provable: exponent " + std::string(name) + " = " + x->to_string() +
-                              " is not rational (the proof needs u = s^Q at the end points)");
+  if (const std::string why = law.why_not_provable(); !why.empty()) throw invalid_parameter(why);
 #if !defined(VISCOR_WITH_ENCLOSE)
   throw invalid_parameter("--prove: this viscor was built without Arb (apt-get install libflint-arb-dev)");
 #endif
@@ -199,7 +196,7 @@ inline command_output run_cor(cor_request q) {
 
     j["gamma"] = number(gamma_value);
     j["g"] = number(g_value);
-    j["precision"] = scalar_json<Real>();
+    j["precision"] = scalar_json<Real>(q.digits);
     add_result_json(j, r, seconds);
     if (scales) {
       j[field::contact_time_s] = number(detail::in_seconds(r.contact_time, scales->time_scale));

@@ -249,7 +249,7 @@ struct dem_job : dem_request {
         run_reverse<Real>(model, impact, j, text);
       else
         run_forward<Real>(model, impact, j, text);
-      j["precision"] = scalar_json<Real>();
+      j["precision"] = scalar_json<Real>(digits);
       j[field::seconds] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       out = {text.str(), j};
     });
@@ -433,11 +433,13 @@ struct dem_job : dem_request {
 
   /// Writes the drop deck and the variable block that were asked for, each sealed (its last
   /// line the SHA-256 of the rest), after checking both again: neither is written when the
-  /// other may not be.
+  /// other may not be, and both published together.
   void write_deck_files(const std::string& deck, const std::string& block) const {
     refuse_outputs_not_ours();
-    if (!drop_deck_path.empty()) write_atomically(drop_deck_path, sealed(deck));
-    if (!variables_path.empty()) write_atomically(variables_path, sealed(block));
+    std::vector<output_file> files;
+    if (!drop_deck_path.empty()) files.push_back({drop_deck_path, sealed(deck)});
+    if (!variables_path.empty()) files.push_back({variables_path, sealed(block)});
+    write_together(files);
   }
 
   /// LAMMPS and LIGGGHTS read the like-bead entries apart from the contact's (pair_coeff, type pairs (1,1), (2,2))

@@ -39,7 +39,7 @@ inline command_output run_exact(const exact_request& q) {
     j["command"] = "exact";
     j["law"] = law_json(q.law);
     j["gamma"] = number(gamma_value), j["g"] = number(g_value);
-    j["precision"] = scalar_json<Real>();
+    j["precision"] = scalar_json<Real>(q.digits);
     j["exists"] = r.has_value();
     std::ostringstream text;
     text << "law      " << q.law.describe() << "\ngamma    " << q.gamma << "\ng        " << q.g << "\n";

@@ -17,11 +17,13 @@
 #include <filesystem>
 #include <fcntl.h>
 #include <fstream>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <sys/file.h>
 #include <sys/stat.h>
 #include <unistd.h>
+#include <vector>
 
 namespace viscor::jobs {
 
@@ -48,15 +50,22 @@ inline void refuse_unless_regular_or_absent(const std::string& path) {
                           "; viscor writes only regular files (name a new or regular file)");
 }
 
-/// The last line of a file that viscor may replace later (a deck, a variable block): the
-/// SHA-256 of everything before it. A name or a first line is no proof that viscor
-/// wrote a file; a seal that matches is, and an edit breaks it.
-inline constexpr const char* seal_prefix = "# viscor sha256 ";
+/// The last line of a file that viscor may replace later (a deck, a variable block, a C
+/// export): the SHA-256 of everything before it. A name or a first line is no proof that
+/// viscor wrote a file; a seal that matches is, and an edit breaks it. The line is a
+/// comment of the file's language: `# ...` in decks, `/* ... */` in C.
+struct seal_style {
+  const char* prefix;
+  const char* suffix;
+};
+inline constexpr seal_style hash_comment_seal{"# viscor sha256 ", ""};
+inline constexpr seal_style c_comment_seal{"/* viscor sha256 ", " */"};
+inline constexpr const char* seal_prefix = hash_comment_seal.prefix;
 
 /// `body` with its seal as the last line (after a line end of its own, if `body` lacks one).
-inline std::string sealed(std::string body) {
+inline std::string sealed(std::string body, const seal_style& style = hash_comment_seal) {
   if (!body.empty() && body.back() != '\n') body += '\n';
-  return body + seal_prefix + sha256_hex(body) + "\n";
+  return body + style.prefix + sha256_hex(body) + style.suffix + "\n";
 }
 
 /// The largest file viscor takes for one it wrote (its decks and blocks are a few kB).
@@ -64,10 +73,13 @@ inline constexpr std::uintmax_t max_sealed_file_size = 1 << 20;
 
 /// Whether `path` is a regular file (not followed through a symbolic link) that viscor
 /// wrote and nobody changed since: it starts with `marker` and ends with the seal of
-/// everything before the seal. Reads nothing from anything but a small regular file.
-inline bool is_unedited_viscor_file(const std::string& path, const std::string& marker) {
+/// everything before the seal. Reads nothing from anything but a regular file of at
+/// most `max_size` bytes.
+inline bool is_unedited_viscor_file(const std::string& path, const std::string& marker,
+                                    const seal_style& style = hash_comment_seal,
+                                    std::uintmax_t max_size = max_sealed_file_size) {
   struct stat st {};
-  if (::lstat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode) || static_cast<std::uintmax_t>(st.st_size) > max_sealed_file_size)
+  if (::lstat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode) || static_cast<std::uintmax_t>(st.st_size) > max_size)
     return false;
   std::string text;
   try {
@@ -75,20 +87,21 @@ inline bool is_unedited_viscor_file(const std::string& path, const std::string& 
   } catch (const error&) {
     return false;
   }
-  const std::size_t seal = text.rfind(seal_prefix);
+  const std::size_t seal = text.rfind(style.prefix);
   if (text.rfind(marker, 0) != 0 || seal == std::string::npos || text.back() != '\n') return false;
   const std::string body = text.substr(0, seal);
-  return text.compare(seal, std::string::npos, std::string(seal_prefix) + sha256_hex(body) + "\n") == 0;
+  return text.compare(seal, std::string::npos, std::string(style.prefix) + sha256_hex(body) + style.suffix + "\n") == 0;
 }
 
 /// Refuses, before any work, an output (`option` names it in the message) that viscor
 /// may write only over its own unedited file: absent, or is_unedited_viscor_file.
 inline void refuse_unless_own_or_absent(const std::string& path, const std::string& marker, const std::string& option,
-                                        const std::string& what) {
+                                        const std::string& what, const seal_style& style = hash_comment_seal,
+                                        std::uintmax_t max_size = max_sealed_file_size) {
   refuse_unless_regular_or_absent(path);
   struct stat st {};
   if (::lstat(path.c_str(), &st) != 0) return;
-  if (!is_unedited_viscor_file(path, marker))
+  if (!is_unedited_viscor_file(path, marker, style, max_size))
     throw invalid_parameter(option + " " + path + ": the file exists and is not " + what +
                             " viscor wrote (or it was edited since: its last line, the seal, no longer matches); "
                             "refusing to replace it (remove it or choose another name)");
@@ -112,36 +125,77 @@ inline void refuse_committed_unless_allowed(const std::string& path) {
                           "its checksum line): write elsewhere");
 }
 
-/// Writes `body` to `path`: into a new temporary file beside it (every write,
-/// the fsync and the close checked), then renamed over `path`. Only regular files
-/// are written: an existing `path` that is not a regular file (a device, a FIFO, a
-/// directory, a symbolic link) is refused and left alone, and so is a file a checksum
-/// manifest lists (refuse_committed_unless_allowed). Any failure removes the
-/// temporary and throws, so nothing is left behind.
+/// One output of a command: where, and all of its content.
+struct output_file {
+  std::string path;
+  std::string body;
+};
+
+namespace detail {
+
+// A temporary file beside an output, created exclusively (never a file or a symbolic
+// link planted at its name), written and closed with every step checked; removed when
+// destroyed unless it was published (renamed over its output).
+class staged_output {
+ public:
+  explicit staged_output(const output_file& file) : m_path(file.path), m_body(file.body) {
+    m_temporary = file.path + ".tmp." + std::to_string(::getpid());
+    const int fd = ::open(m_temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
+    if (fd < 0) throw error("cannot write output file '" + m_path + "': cannot create '" + m_temporary + "': " +
+                            std::strerror(errno));
+    const bool written = viscor::detail::write_all(fd, m_body) && ::fsync(fd) == 0;
+    const int saved = errno;
+    if (::close(fd) != 0 || !written) {
+      const int e = written ? errno : saved;
+      ::unlink(m_temporary.c_str());  // a constructor that throws has no destructor to do it
+      throw error("writing output file '" + m_path + "' failed: " + std::strerror(e));
+    }
+    m_created = true;
+  }
+  staged_output(const staged_output&) = delete;
+  staged_output& operator=(const staged_output&) = delete;
+  ~staged_output() {
+    if (m_created) ::unlink(m_temporary.c_str());
+  }
+
+  /// Renames the temporary over the output (checked again: the output may have become
+  /// something else meanwhile), then keeps a manifest line that lists it true.
+  void publish() {
+    refuse_unless_regular_or_absent(m_path);
+    if (::rename(m_temporary.c_str(), m_path.c_str()) != 0)
+      throw error("cannot move output into '" + m_path + "': " + std::strerror(errno));
+    m_created = false;
+    update_checksum(m_path, m_body);  // a committed file viscor regenerates keeps a true manifest line
+  }
+
+ private:
+  std::string m_path, m_temporary;
+  const std::string& m_body;
+  bool m_created = false;
+};
+
+}  // namespace detail
+
+/// Writes the outputs of one command together: each is checked first (only regular
+/// files are written: an existing output that is a device, a FIFO, a directory or a
+/// symbolic link is refused and left alone, and so is a file a checksum manifest lists,
+/// refuse_committed_unless_allowed), then each is written into a new temporary file
+/// beside it (every write, the fsync and the close checked), and only when all are
+/// written are they renamed over their outputs, in order. A failure before the renames
+/// removes every temporary and replaces nothing.
+inline void write_together(const std::vector<output_file>& files) {
+  for (const output_file& f : files) {
+    refuse_unless_regular_or_absent(f.path);
+    refuse_committed_unless_allowed(f.path);
+  }
+  std::vector<std::unique_ptr<detail::staged_output>> staged;
+  for (const output_file& f : files) staged.push_back(std::make_unique<detail::staged_output>(f));
+  for (auto& s : staged) s->publish();
+}
+
+/// Writes one output as write_together does: a failure leaves nothing behind.
 inline void write_atomically(const std::string& path, const std::string& body) {
-  refuse_unless_regular_or_absent(path);
-  refuse_committed_unless_allowed(path);
-  const std::string temporary = path + ".tmp." + std::to_string(::getpid());
-  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-  if (fd < 0) throw error("cannot write output file '" + path + "': " + std::strerror(errno));
-  const bool written = viscor::detail::write_all(fd, body) && ::fsync(fd) == 0;
-  const int saved = errno;
-  if (::close(fd) != 0 || !written) {
-    ::unlink(temporary.c_str());
-    throw error("writing output file '" + path + "' failed: " + std::strerror(written ? errno : saved));
-  }
-  try {
-    refuse_unless_regular_or_absent(path);  // again: it may have appeared meanwhile
-  } catch (...) {
-    ::unlink(temporary.c_str());
-    throw;
-  }
-  if (::rename(temporary.c_str(), path.c_str()) != 0) {
-    const int e = errno;
-    ::unlink(temporary.c_str());
-    throw error("cannot move output into '" + path + "': " + std::strerror(e));
-  }
-  update_checksum(path, body);  // a committed file viscor regenerates keeps a true manifest line
+  write_together({output_file{path, body}});
 }
 
 /// An exclusive lock on an output: the file `output + ".lock"`, held with flock(2)

@@ -126,34 +126,30 @@ inline std::string quoted_start(const std::string& text) {
   return "'" + (text.size() > 60 ? text.substr(0, 60) + "...'" : text + "'");
 }
 
-// The text of a values file ("-": standard input); refuses what is not UTF-8 text, naming where.
+// The text of a values file ("-": standard input).
 inline std::string read_values_text(const std::string& path) {
-  std::string text;
-  if (path == "-") {
-    std::ostringstream s;
-    s << std::cin.rdbuf();
-    text = s.str();
-  } else {
+  if (path != "-") {
     struct stat st {};
     if (::stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode))
       throw invalid_parameter("formula check: the values file '" + path + "' is not a regular file");
-    text = read_file(path);
+    return read_file(path);
   }
-  const std::string name = path == "-" ? "<stdin>" : path;
-  const std::size_t bad = first_invalid_utf8(text);
-  if (bad != std::string::npos)
-    throw parse_error(name + ":" + std::to_string(1 + std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(bad), '\n')) +
-                      ": not UTF-8 text (byte " + std::to_string(bad) + "); the values are a CSV with the header gamma,g,e");
-  return text;
+  std::ostringstream s;
+  s << std::cin.rdbuf();
+  return s.str();
 }
 
 }  // namespace detail
 
-/// Reads a values file ("-": standard input); refuses text that is not UTF-8, a
-/// missing or repeated column and any field that is not a number, naming the line.
-inline formula_values read_formula_values(const std::string& path) {
-  std::istringstream in(detail::read_values_text(path));
-  const std::string name = path == "-" ? "<stdin>" : path;
+/// The values in `text`, the content of the values file `name` (for messages); refuses
+/// text that is not UTF-8, a missing or repeated column and any field that is not a
+/// number, naming the line.
+inline formula_values parse_formula_values(const std::string& text, const std::string& name) {
+  const std::size_t bad = first_invalid_utf8(text);
+  if (bad != std::string::npos)
+    throw parse_error(name + ":" + std::to_string(1 + std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(bad), '\n')) +
+                      ": not UTF-8 text (byte " + std::to_string(bad) + "); the values are a CSV with the header gamma,g,e");
+  std::istringstream in(text);
   formula_values v;
   std::vector<std::string> header;
   int gamma_col = -1, g_col = -1, value_col = -1;
@@ -197,6 +193,11 @@ inline formula_values read_formula_values(const std::string& path) {
   }
   if (header.empty()) throw parse_error(name + ": no header and no values (formula check needs gamma,g,e)");
   return v;
+}
+
+/// Reads a values file ("-": standard input) and parses it (parse_formula_values).
+inline formula_values read_formula_values(const std::string& path) {
+  return parse_formula_values(detail::read_values_text(path), path == "-" ? "<stdin>" : path);
 }
 
 /// The values of `given` at the reference points; the points without a value are

@@ -8,6 +8,7 @@
 #include <viscor/core/field_names.hpp>
 #include <viscor/core/contact_law.hpp>
 #include <viscor/core/exceptions.hpp>
+#include <viscor/core/precision.hpp>
 #include <viscor/core/real_io.hpp>
 #include <viscor/core/real_types.hpp>
 #include <viscor/jobs/files.hpp>
@@ -94,12 +95,20 @@ inline json law_json(const contact_law& law) {
   return j;
 }
 
-/// The name and precision of the scalar type in use.
+/// The precision and the arithmetic of the scalar type in use; given the digits that
+/// were asked for, also the arithmetic they chose when the computation left it
+/// (with_working_precision reruns a double-double solve in float128 or MPFR when a
+/// value leaves double's exponent range).
 template <class Real>
-json scalar_json() {
+json scalar_json(std::optional<int> requested_digits = std::nullopt) {
   json j;
   j["digits"] = decimal_digits<Real>();
   j["binary_digits"] = binary_digits<Real>();
+  j["arithmetic"] = to_string(scalar_kind_of<Real>());
+  if (requested_digits) {
+    const scalar_kind asked = scalar_for_digits(*requested_digits);
+    if (asked != scalar_kind_of<Real>()) j["escalated_from"] = to_string(asked);
+  }
   return j;
 }
 

@@ -26,6 +26,7 @@
 #include <viscor/scenes/scene.hpp>
 
 #include <cstdlib>
+#include <initializer_list>
 #include <optional>
 #include <string>
 #include <tuple>
@@ -138,7 +139,23 @@ struct physical_inputs {
       throw invalid_parameter(command + ": physical mode needs --gravity (m/s^2 towards the wall; 0 for none): "
                                         "the load changes the result, so it never defaults");
     require_gravity_towards_wall(gravity);
+    require_double_range();
     check_plausible_units();
+  }
+
+  /// Every physical input is an SI value within double's normal range (about 2.2e-308 to
+  /// 1.8e308), whatever the working precision: an input such as v0 = 1e-400 is refused
+  /// naming it at 20 digits as it is at 15, instead of giving an answer that depends on
+  /// the digits asked for.
+  void require_double_range() const {
+    for (const auto& [value, name] : std::initializer_list<std::pair<const std::optional<std::string>*, const char*>>{
+             {&m, "m"}, {&k, "k"}, {&v0, "v0"}, {&gamma0, "gamma0"}, {&gravity, "gravity"}, {&force, "force"},
+             {&youngs_modulus, "youngs_modulus"}, {&poisson_ratio, "poisson_ratio"}, {&radius, "radius"},
+             {&density, "density"}, {&wall_youngs_modulus, "wall_youngs_modulus"},
+             {&wall_poisson_ratio, "wall_poisson_ratio"}, {&other_youngs_modulus, "other_youngs_modulus"},
+             {&other_poisson_ratio, "other_poisson_ratio"}, {&other_radius, "other_radius"},
+             {&other_density, "other_density"}})
+      if (*value) (void)parse_real<double>(**value, name);
   }
 
   /// Warns (refuses under --strict) about inputs far outside their quantity's range.

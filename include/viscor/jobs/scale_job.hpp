@@ -40,7 +40,7 @@ inline command_output run_scale(scale_request q) {
     j["command"] = "scale";
     j["law"] = law_json(q.law);
     j["physical"] = q.physical.echo();
-    j["precision"] = scalar_json<Real>();
+    j["precision"] = scalar_json<Real>(q.digits);
     std::ostringstream text;
     text << "law      " << q.law.describe() << "\n";
     if (inverse) {

@@ -224,7 +224,7 @@ inline scene_result run_scene_file(const scene_file& file, const std::string& pa
       }
       j["tolerance"] = file.scene.tolerance;
       j["bound"] = s.relative ? "relative_one_minus_e" : "absolute";
-      j["precision"] = scalar_json<Real>();
+      j["precision"] = scalar_json<Real>(digits);
       j["error_map"] = map_note;
       j["surrogate"] = surrogate_note;
       j["impacts"] = index, j["sticking_impacts"] = sticking, j["methods"] = method_json;

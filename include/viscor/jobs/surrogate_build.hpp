@@ -205,10 +205,10 @@ inline fitted_surrogate fit_or_reuse(const surrogate_spec& spec, const std::stri
                 {"g_split", s.g_split}, {"git_commit", git_commit()}, {"date", iso_time_utc(std::time(nullptr))}};
     std::ostringstream fitted;
     write_cor_surrogate(fitted, s);
-    write_atomically(fit_file, fitted.str());
-    write_atomically(fit_file + ".json", json{{"what", "unverified fit (viscor surrogate build); "
-                                                                       "reused by --resume"},
-                                                              {"fit_spec", fit_key}, {"fit", fit_json}}.dump(2) + "\n");
+    const json fit_side{{"what", "unverified fit (viscor surrogate build); reused by --resume"},
+                        {"fit_spec", fit_key},
+                        {"fit", fit_json}};
+    write_together({{fit_file, fitted.str()}, {fit_file + ".json", fit_side.dump(2) + "\n"}});
     say("fit: " + std::to_string(report.patches_low) + " + " + std::to_string(report.patches_high) + " patches, " +
         std::to_string(report.solves) + " solves, " + duration_text(report.seconds));
   }
@@ -313,7 +313,6 @@ inline bool build_surrogate(const surrogate_build_request& q) {
   const json stats = state_bounds(s, spec, read_verification_rows(table), output, table);
   std::ostringstream body;
   write_cor_surrogate(body, s);
-  write_atomically(output, body.str());
   json side;
   side["what"] = "CoR surrogate (viscor::surrogate::cor_surrogate) of " + spec.fit.law.describe();
   side["viscor_version"] = VISCOR_VERSION;
@@ -331,7 +330,7 @@ inline bool build_surrogate(const surrogate_build_request& q) {
   side["wall_time_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   side["date"] = iso_time_utc(std::time(nullptr));
   side["host"] = host_name();
-  write_atomically(output + ".json", side.dump(2) + "\n");
+  write_together({{output, body.str()}, {output + ".json", side.dump(2) + "\n"}});
   say("wrote '" + output + "' and '" + output + ".json'");
   return true;
 }

@@ -89,6 +89,12 @@ inline std::vector<std::string> export_law_names(const surrogate_export_options&
   return names;
 }
 
+inline std::string c_comment_number(double x) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.2e", x);
+  return b;
+}
+
 struct law_export {
   std::string name;
   surrogate::cor_surrogate s;
@@ -96,10 +102,49 @@ struct law_export {
   std::vector<surrogate::region_errors> regions;
 };
 
-inline std::string c_comment_number(double x) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.2e", x);
-  return b;
+// The export states the surrogate's bound and prints its measured maxima beside it:
+// refused when the bound is missing, when the table judged nothing, or when a maximum
+// over all the verification points exceeds the bound (or an outcome is wrong).
+inline void refuse_a_bound_its_table_breaks(const law_export& l, const std::string& path) {
+  const surrogate::surrogate_bound& b = l.s.bound;
+  if (!b.verified())
+    throw invalid_parameter("surrogate export: " + path + " states no verified bound (never verified): "
+                            "verify it (viscor surrogate build) before exporting it");
+  const surrogate::region_errors& all = l.regions.at(0);  // region_names[0]: every point
+  const std::size_t judged = all.points - all.outside_domain - all.exempt - all.left_out;
+  std::string broken;
+  const auto note = [&](const std::string& what) { broken += (broken.empty() ? "" : "; ") + what; };
+  const auto check = [&](const char* what, double measured, double bound) {
+    if (!(measured <= bound)) note(std::string(what) + " " + c_comment_number(measured) + " > bound " + c_comment_number(bound));
+  };
+  check("max|de|", all.abs_e, b.abs_e);
+  check("max|de^2|", all.abs_e_squared, b.abs_e_squared);
+  check("rel d(1-e)", all.rel_one_minus_e, b.rel_one_minus_e);
+  if (all.wrong_outcomes > 0) note(std::to_string(all.wrong_outcomes) + " wrong outcomes");
+  if (judged == 0) note("no verification point judged");
+  if (!broken.empty())
+    throw invalid_parameter("surrogate export: " + path + " breaks the bound it states on its own verification table (" +
+                            path + ".verification.csv): " + broken + "; refusing to export it");
+}
+
+// A law's surrogate and its verification table, each read once and checked against the
+// manifest beside it (a file changed after viscor wrote it is refused), and the accuracy
+// the surrogate has on that table: an export never states a bound its own table breaks.
+inline law_export read_law_export(const std::string& directory, const std::string& name) {
+  law_export l;
+  l.name = name;
+  const std::string path = directory + "/" + name + ".surrogate";
+  const std::string body = read_checked_file<invalid_parameter>(path, "surrogate file");
+  std::istringstream in(body);
+  l.s = surrogate::read_cor_surrogate(in, path);
+  l.surrogate_sha256 = sha256_hex(body);
+  const std::string table = path + ".verification.csv";
+  const std::string rows = read_checked_file<invalid_parameter>(table, "verification table");
+  l.verification_sha256 = sha256_hex(rows);
+  l.regions = surrogate::compare_with_reference(l.s, verification_rows(parse_table(rows, table), table),
+                                                surrogate::surrogate_targets{}, 25);
+  refuse_a_bound_its_table_breaks(l, path);
+  return l;
 }
 
 inline std::string tree_data(const std::string& prefix, const surrogate::patch_tree& t) {
@@ -165,7 +210,9 @@ inline std::string c_comment(const std::string& file, const std::vector<law_expo
   o << "/* " << file << ": the coefficient of restitution e of a bead hitting a wall, as fast\n"
     << " * double-precision surrogates of viscor's certified solutions, exported as self-contained\n"
     << " * C99 by `viscor surrogate export --language c` (docs/surrogate.md, \"Exporting to C\").\n"
-    << " * Do not edit: export again. Needs only the C standard library (<math.h>, <float.h>);\n"
+    << " * Do not edit: export again (the last line seals the file with the SHA-256 of the rest;\n"
+    << " * an export replaces only a file whose seal still matches). Needs only the C standard\n"
+    << " * library (<math.h>, <float.h>);\n"
     << " * no allocation, no state written (every table is const): safe from any thread.\n"
     << " *\n" << c_license << " *\n"
     << " * Provenance (format: viscor C export 1). Made from these files of viscor's\n"
@@ -269,6 +316,9 @@ typedef struct viscor_surrogate {
 /* The surrogate of the law called `law` ("tsuji", ...), or a null pointer. */
 const viscor_surrogate* viscor_surrogate_named(const char* law);
 
+/* Every function below takes a null `s` as a point outside the domain: NaN, or the
+   outcome VISCOR_OUTSIDE_DOMAIN with NaN values. */
+
 /* ---- scaled variables ---- */
 
 /* e, 1 - e, e^2 and the outcome at (gamma, g). */
@@ -296,15 +346,18 @@ double viscor_time_scale(const viscor_surrogate* s, double m, double k, double v
 double viscor_damping_scale(const viscor_surrogate* s, double m, double k, double v0);
 /* g / (gravity + F/m) = (m/k)^(1/(alpha+1)) v0^(-2 alpha/(alpha+1)). */
 double viscor_load_scale(const viscor_surrogate* s, double m, double k, double v0);
-/* The scaled load g of gravity and the force F (N) towards the wall. */
+/* The scaled load g of gravity (m/s^2, >= 0: towards the wall) and the force F (N,
+   towards the wall; negative: away from it). NaN for a negative or NaN gravity. */
 double viscor_scaled_g(const viscor_surrogate* s, double m, double k, double v0, double gravity, double force);
-/* The impact of a bead (m > 0, k > 0, gamma0 >= 0, v0 > 0): e, 1 - e and the outcome
-   (VISCOR_OUTSIDE_DOMAIN, values NaN, for invalid inputs or outside the domain). */
+/* The impact of a bead (m > 0, k > 0, gamma0 >= 0, v0 > 0, gravity >= 0): e, 1 - e and
+   the outcome (VISCOR_OUTSIDE_DOMAIN, values NaN, for invalid inputs, such as a negative
+   gravity, or outside the domain). */
 viscor_cor viscor_cor_physical(const viscor_surrogate* s, double m, double k, double gamma0, double v0,
                                double gravity, double force);
 /* The damping coefficient gamma0 at which the bead rebounds with e_target
    (0.01 <= e_target < 1) under gravity and F: viscor_gamma_for at the scaled load,
-   divided by viscor_damping_scale. NaN if no gamma in the domain gives e_target. */
+   divided by viscor_damping_scale. NaN for invalid inputs (as viscor_cor_physical) or
+   if no gamma in the domain gives e_target. */
 double viscor_damping_for(const viscor_surrogate* s, double e_target, double m, double k, double v0,
                           double gravity, double force);
 )";
@@ -404,7 +457,7 @@ static viscor_cor viscor_sg_stick(double e_squared) {
 viscor_cor viscor_cor_at(const viscor_surrogate* s, double gamma, double g) {
     viscor_cor v;
     double w = gamma, G, dissipated;
-    if (!(gamma >= 0 && gamma <= s->gamma_max && g >= s->g_min && g <= s->g_max)) { /* also NaN */
+    if (!s || !(gamma >= 0 && gamma <= s->gamma_max && g >= s->g_min && g <= s->g_max)) { /* also NaN */
         v.outcome = VISCOR_OUTSIDE_DOMAIN;
         v.e = NAN, v.one_minus_e = NAN, v.e_squared = NAN;
         return v;
@@ -438,7 +491,7 @@ viscor_outcome viscor_outcome_at(const viscor_surrogate* s, double gamma, double
 }
 
 double viscor_critical_gamma(const viscor_surrogate* s, double g) {
-    if (!(g >= s->g_min && g <= s->g_max)) return NAN;
+    if (!s || !(g >= s->g_min && g <= s->g_max)) return NAN;
     if (g <= s->g_split) return HUGE_VAL;
     return viscor_sg_critical_gamma_at(s, g, log(g));
 }
@@ -537,7 +590,7 @@ static double viscor_sg_solve(const viscor_sg_tree* tree, int x_free, double fix
 
 double viscor_gamma_for(const viscor_surrogate* s, double e_target, double g) {
     double dissipated, x, gc, top;
-    if (!(e_target >= 0.01 && e_target < 1) || !(g >= s->g_min && g <= s->g_max)) return NAN;
+    if (!s || !(e_target >= 0.01 && e_target < 1) || !(g >= s->g_min && g <= s->g_max)) return NAN;
     dissipated = (1 - e_target) * (1 + e_target);
     if (!(dissipated > 0)) return 0;
     if (g <= s->g_split) return viscor_sg_solve(&s->low_load, 1, g, dissipated, s->gamma_max);
@@ -550,33 +603,40 @@ double viscor_gamma_for(const viscor_surrogate* s, double e_target, double g) {
 /* ---- physical variables (core/scaling.hpp: the same expressions) ---- */
 
 double viscor_time_scale(const viscor_surrogate* s, double m, double k, double v0) {
-    const double alpha = s->alpha;
+    double alpha;
+    if (!s) return NAN;
+    alpha = s->alpha;
     return pow(m / k, 1 / (alpha + 1)) * pow(v0, (1 - alpha) / (alpha + 1));
 }
 
 double viscor_damping_scale(const viscor_surrogate* s, double m, double k, double v0) {
-    const double alpha = s->alpha, beta = s->beta;
+    double alpha, beta;
+    if (!s) return NAN;
+    alpha = s->alpha, beta = s->beta;
     return pow(v0, 2 * beta / (alpha + 1) - 1) * pow(k / m, 1 - beta / (alpha + 1));
 }
 
 double viscor_load_scale(const viscor_surrogate* s, double m, double k, double v0) {
-    const double alpha = s->alpha;
+    double alpha;
+    if (!s) return NAN;
+    alpha = s->alpha;
     return pow(m / k, 1 / (alpha + 1)) * pow(v0, -2 * alpha / (alpha + 1));
 }
 
 double viscor_scaled_g(const viscor_surrogate* s, double m, double k, double v0, double gravity, double force) {
     const double acceleration = gravity + force / m;
+    if (!(gravity >= 0)) return NAN;
     return viscor_load_scale(s, m, k, v0) * acceleration;
 }
 
 static int viscor_sg_valid_bead(double m, double k, double v0, double gravity, double force) {
-    return m > 0 && k > 0 && v0 > 0 && m <= DBL_MAX && k <= DBL_MAX && v0 <= DBL_MAX && gravity == gravity &&
+    return m > 0 && k > 0 && v0 > 0 && m <= DBL_MAX && k <= DBL_MAX && v0 <= DBL_MAX && gravity >= 0 &&
            force == force;
 }
 
 viscor_cor viscor_cor_physical(const viscor_surrogate* s, double m, double k, double gamma0, double v0,
                                double gravity, double force) {
-    if (!viscor_sg_valid_bead(m, k, v0, gravity, force) || !(gamma0 >= 0)) {
+    if (!s || !viscor_sg_valid_bead(m, k, v0, gravity, force) || !(gamma0 >= 0)) {
         viscor_cor v;
         v.outcome = VISCOR_OUTSIDE_DOMAIN;
         v.e = NAN, v.one_minus_e = NAN, v.e_squared = NAN;
@@ -587,7 +647,7 @@ viscor_cor viscor_cor_physical(const viscor_surrogate* s, double m, double k, do
 
 double viscor_damping_for(const viscor_surrogate* s, double e_target, double m, double k, double v0,
                           double gravity, double force) {
-    if (!viscor_sg_valid_bead(m, k, v0, gravity, force)) return NAN;
+    if (!s || !viscor_sg_valid_bead(m, k, v0, gravity, force)) return NAN;
     return viscor_gamma_for(s, e_target, viscor_scaled_g(s, m, k, v0, gravity, force)) /
            viscor_damping_scale(s, m, k, v0);
 }
@@ -603,19 +663,7 @@ inline std::vector<exported_file> surrogate_export_files(const surrogate_export_
     throw invalid_parameter("surrogate export: language '" + options.language + "' is not supported (only c)");
   const auto names = detail::export_law_names(options);
   std::vector<detail::law_export> laws;
-  for (const auto& name : names) {
-    detail::law_export l;
-    l.name = name;
-    const std::string path = options.surrogate_directory + "/" + name + ".surrogate";
-    const std::string body = read_file(path);
-    std::istringstream in(body);
-    l.s = surrogate::read_cor_surrogate(in, path);
-    l.surrogate_sha256 = sha256_hex(body);
-    const std::string table = path + ".verification.csv";
-    l.verification_sha256 = sha256_hex(read_file(table));
-    l.regions = surrogate::compare_with_reference(l.s, read_verification_rows(table), surrogate::surrogate_targets{}, 25);
-    laws.push_back(std::move(l));
-  }
+  for (const auto& name : names) laws.push_back(detail::read_law_export(options.surrogate_directory, name));
   const bool all = options.laws.empty() || (options.laws.size() == 1 && options.laws[0] == "all");
   const std::string base = all ? "viscor_surrogates" : names.size() == 1 ? "viscor_surrogate_" + names[0] : "viscor_surrogates";
   std::string guard;
@@ -657,11 +705,20 @@ inline std::vector<exported_file> surrogate_export_files(const surrogate_export_
   for (const auto& l : laws)
     c << "    if (law && viscor_sg_names_equal(law, \"" << l.name << "\")) return &viscor_surrogate_" << l.name << ";\n";
   c << "    return 0;\n}\n";
-  return {{base + ".h", h.str()}, {base + ".c", c.str()}};
+  return {{base + ".h", sealed(h.str(), c_comment_seal)}, {base + ".c", sealed(c.str(), c_comment_seal)}};
 }
 
+/// The first bytes of an exported file named `name`: with its seal, what
+/// export_surrogates takes as proof that viscor wrote the file it replaces.
+inline std::string exported_file_marker(const std::string& name) { return "/* " + name + ": "; }
+
+/// The largest exported file (all five laws: about 2 MB).
+inline constexpr std::uintmax_t max_exported_file_size = std::uintmax_t(64) << 20;
+
 /// Writes the files of surrogate_export_files into options.output_directory (created
-/// if absent; each file replaced in one rename, regular files only). Returns their paths.
+/// if absent). A file there is replaced only when it is an unedited export (its seal
+/// matches: is_unedited_viscor_file); the .h and the .c are checked before either is
+/// written and published together (write_together). Returns their paths.
 inline std::vector<std::string> export_surrogates(const surrogate_export_options& options) {
   if (options.output_directory.empty()) throw invalid_parameter("surrogate export needs an output directory: -o DIR");
   const auto files = surrogate_export_files(options);
@@ -671,11 +728,15 @@ inline std::vector<std::string> export_surrogates(const surrogate_export_options
   std::filesystem::create_directories(options.output_directory, ec);
   if (ec) throw error("surrogate export: cannot create the directory '" + options.output_directory + "': " + ec.message());
   std::vector<std::string> paths;
+  std::vector<output_file> outputs;
   for (const auto& f : files) {
     const std::string path = options.output_directory + "/" + f.name;
-    write_atomically(path, f.text);
+    refuse_unless_own_or_absent(path, exported_file_marker(f.name), "surrogate export -o", "an export",
+                                c_comment_seal, max_exported_file_size);
+    outputs.push_back({path, f.text});
     paths.push_back(path);
   }
+  write_together(outputs);
   return paths;
 }
 

@@ -22,9 +22,10 @@
 namespace viscor::jobs {
 
 /// The certified rows of a surrogate's verification table (FILE.verification.csv,
-/// a CoR table) in the surrogate's types: the truth its bounds are measured against.
-inline std::vector<surrogate::reference_value> read_verification_rows(const std::string& path) {
-  const csv_table table = read_table(path);
+/// a CoR table, read from `path`) in the surrogate's types: the truth its bounds are
+/// measured against.
+inline std::vector<surrogate::reference_value> verification_rows(const csv_table& table, const std::string& path) {
+  if (table.kind != table_kind::cor) throw parse_error(path + ":1: a verification table is a CoR table");
   std::vector<surrogate::reference_value> refs;
   for (const auto& r : table.rows) {
     const auto& f = r.fields;
@@ -37,6 +38,11 @@ inline std::vector<surrogate::reference_value> read_verification_rows(const std:
     refs.push_back(v);
   }
   return refs;
+}
+
+/// verification_rows of the table file `path`, read through the checking reader.
+inline std::vector<surrogate::reference_value> read_verification_rows(const std::string& path) {
+  return verification_rows(read_table(path), path);
 }
 
 /// The directory of the committed surrogates: $VISCOR_SURROGATE_DIR, else

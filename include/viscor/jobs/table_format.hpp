@@ -55,13 +55,10 @@ inline std::string proven_table_header() {
 }
 
 /// Refuses (invalid_parameter, exit 2) a law the proof cannot handle, naming the
-/// exponent: the proof needs u = s^Q at the end points, i.e. rational exponents.
+/// exponent (contact_law::why_not_provable), before any work.
 inline void require_provable(const contact_law& law, const std::string& where) {
-  for (const auto& [name, x] : {std::pair<const char*, const exponent*>{"alpha", &law.alpha}, {"beta", &law.beta}})
-    if (!x->is_rational())
-      throw invalid_parameter(where + ": not provable: exponent " + std::string(name) + " = " + x->to_string() +
-                              " is not rational (the proof needs u = s^Q at the end points); use method "
-                              "\"certify\" for this law");
+  if (const std::string why = law.why_not_provable(); !why.empty())
+    throw invalid_parameter(where + ": " + why + "; use method \"certify\" for this law");
 }
 
 namespace detail {
@@ -167,12 +164,14 @@ inline csv_table parse_proven_table(const std::string& text, const std::string& 
         lines.push_back(std::move(line));
       });
   if (!have_header) throw parse_error(file + ":1: empty file: no header line");
-  csv_table table = parse_table(cor_text, file);
+  csv_table table = parse_table(cor_text, file, false, cor_sum_check::by_caller);
   for (std::size_t i = 0; i < table.rows.size(); ++i) {
     csv_record& row = table.rows[i];
     row.text = lines[i];
     row.fields = viscor::detail::split_csv_line(row.text);
-    detail::check_proven_fields(viscor::detail::row_checker(file, row.line, columns, row.fields), n_cor);
+    const viscor::detail::row_checker check(file, row.line, columns, row.fields);
+    detail::check_proven_fields(check, n_cor);  // first: a value outside its enclosure says more
+    viscor::detail::check_cor_sum(check);
   }
   table.truncated_tail = truncated;
   return table;

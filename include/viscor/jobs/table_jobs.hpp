@@ -237,11 +237,19 @@ inline table_run_summary make_sticking_table(const table_spec& table, const tabl
 }
 
 /// Joins shard tables (each with its sidecar) into the whole table `output`:
-/// every grid row exactly once, all from one spec, precision and viscor version.
+/// every grid row exactly once, all from one spec, precision and viscor version. Holds
+/// the output's lock (output_lock) as a table run does.
 inline std::size_t merge_tables(const std::vector<std::string>& input_paths, const std::string& output,
                                 bool quiet = false) {
   if (input_paths.empty()) throw invalid_parameter("viscor table merge needs the shard tables to merge");
   if (output.empty()) throw invalid_parameter("viscor table merge needs an output file: -o OUT.csv");
+  // Before any reading: the outputs must be ours to write, and no other viscor may be
+  // writing them (a table run or another merge of the same output).
+  for (const std::string& path : {output, output + ".json"}) {
+    refuse_unless_regular_or_absent(path);
+    refuse_committed_unless_allowed(path);
+  }
+  const output_lock lock(output);
   struct input {
     std::string path;
     table_format format;
@@ -353,8 +361,7 @@ inline std::size_t merge_tables(const std::vector<std::string>& input_paths, con
   sidecar["merged_from"] = parts;
   for (const char* k : {"threads", "sessions", "rows_from_earlier_sessions"}) sidecar.erase(k);
 
-  write_atomically(output, text);
-  write_atomically(output + ".json", sidecar.dump(2) + "\n");
+  write_together({{output, text}, {output + ".json", sidecar.dump(2) + "\n"}});
   if (!quiet)
     std::cerr << "viscor table merge: wrote " << output << " (" << rows.size() << " rows from "
               << inputs.size() << " tables)\n";

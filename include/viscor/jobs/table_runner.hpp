@@ -37,6 +37,7 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <thread>
 #include <unistd.h>
 #include <vector>
@@ -234,8 +235,23 @@ struct table_run_summary {
   double wall_time_seconds = 0;                ///< of this session
 };
 
-/// Runs the job; throws viscor::error on failure or interruption (the partial
-/// file is then kept for --resume).
+/// A table run stopped by an interruption (Ctrl-C, SIGTERM, a front end's stop): how
+/// many rows are kept, and where, so that each front end can say how to go on.
+struct table_interrupted : error {
+  /// rows_done of rows_total rows are kept in partial_file; the message is the CLI's.
+  table_interrupted(std::size_t rows_done, std::size_t rows_total, std::string partial_file)
+      : error("interrupted: " + std::to_string(rows_done) + " of " + std::to_string(rows_total) +
+              " rows are done and kept in '" + partial_file + "'; rerun the same command with --resume to continue"),
+        done(rows_done),
+        total(rows_total),
+        partial(std::move(partial_file)) {}
+  std::size_t done;     ///< rows finished and kept
+  std::size_t total;    ///< rows of the run
+  std::string partial;  ///< the file that keeps them
+};
+
+/// Runs the job; throws viscor::error on failure, table_interrupted on interruption
+/// (the partial file is then kept for --resume).
 inline table_run_summary run_table_job(const table_job& job) {
   using namespace std::chrono;
   const std::string partial = job.output + ".partial", partial_meta = job.output + ".partial.json";
@@ -315,8 +331,7 @@ inline table_run_summary run_table_job(const table_job& job) {
     if (job.resume && !job.quiet) std::cerr << "viscor table: nothing to resume; computing every row\n";
     meta["fingerprint"] = fingerprint;
     meta["note"] = "an interrupted viscor table run: rerun the same command with --resume";
-    write_atomically(partial_meta, meta.dump(2) + "\n");
-    write_atomically(partial, format.header() + "\n");
+    write_together({{partial_meta, meta.dump(2) + "\n"}, {partial, format.header() + "\n"}});
   }
   const double earlier_wall = meta.value("wall_time_seconds", 0.0);
   const int earlier_sessions = meta.value("sessions", 0);
@@ -408,7 +423,7 @@ inline table_run_summary run_table_job(const table_job& job) {
           throw error(std::string("internal error: ") + e.what() + "\n  " + kept);
         }
       }
-      throw error("interrupted: " + kept + "; rerun the same command with --resume to continue");
+      throw table_interrupted(done.size() + finished, job.indices.size(), partial);
     }
   }
 
@@ -436,8 +451,7 @@ inline table_run_summary run_table_job(const table_job& job) {
   sidecar["sessions"] = earlier_sessions + 1;
   sidecar["rows_from_earlier_sessions"] = done.size();
 
-  write_atomically(job.output, text);
-  write_atomically(job.output + ".json", sidecar.dump(2) + "\n");
+  write_together({{job.output, text}, {job.output + ".json", sidecar.dump(2) + "\n"}});
   detail::remove_file(partial);
   detail::remove_file(partial_meta);
   if (!job.quiet)

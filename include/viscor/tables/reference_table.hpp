@@ -261,6 +261,15 @@ inline int significant_digits(const std::string& text) {
   return count;
 }
 
+// One unit of the last digit of x (written as `text`) that is both printed and among
+// the `digits` certified significant digits: how far a correctly rounded value may be
+// from the truth, with room to spare. Zero for x = 0 (printed exactly).
+inline exact_decimal last_digit_unit(const exact_decimal& x, const std::string& text, std::int64_t digits) {
+  if (x.is_zero()) return exact_decimal();
+  const long long kept = std::max<long long>(1, std::min<long long>(digits, significant_digits(text)));
+  return exact_decimal(1, static_cast<int>(x.leading_exponent() - kept + 1));
+}
+
 inline void check_cor_row(const row_checker& c) {
   // index,law,alpha,beta,gamma,g,outcome,e,one_minus_e,contact_time,max_compression,digits,method
   c.law();
@@ -283,6 +292,20 @@ inline void check_cor_row(const row_checker& c) {
   if (c.at(12) == "certified" && c.at(6) == "rebound" && c.at(7) != "1" && significant_digits(c.at(7)) < certified)
     c.fail(11, "claims " + c.at(11) + " certified digits, but e = " + c.at(7) + " is written with " +
                    std::to_string(significant_digits(c.at(7))));
+}
+
+/// e and 1 - e of a rebound row (checked by check_cor_row) are computed and rounded
+/// apart: they add up to 1 within the row's certified digits (one unit of the last
+/// such digit of each), or one of them was changed after viscor wrote it.
+inline void check_cor_sum(const row_checker& c) {
+  if (c.at(6) != "rebound") return;
+  const std::int64_t certified = c.integer(11, max_working_digits);
+  const exact_decimal e = c.decimal(7), one_minus_e = c.decimal(8);
+  const exact_decimal miss = e + one_minus_e - exact_decimal(1, 0);
+  const exact_decimal allowed = last_digit_unit(e, c.at(7), certified) + last_digit_unit(one_minus_e, c.at(8), certified);
+  if (miss > allowed || exact_decimal() - miss > allowed)
+    c.fail(8, "e + one_minus_e must be 1 within the row's " + c.at(11) + " certified digits, but e = " + c.at(7) +
+                  " and one_minus_e add up to 1 + (" + miss.to_string() + ")");
 }
 
 inline void check_sticking_row(const row_checker& c) {
@@ -324,11 +347,16 @@ bool for_each_table_line(const std::string& text, const std::string& file, bool 
 
 }  // namespace detail
 
+/// Who checks that e + (1 - e) = 1 in a CoR row (detail::check_cor_sum): parse_table,
+/// or a caller with rules of its own to check first (the proven table's enclosures).
+enum class cor_sum_check { here, by_caller };
+
 /// Parses and validates the text of a table file named `file` (for messages).
 /// With allow_truncated_tail, a last line without '\n' (a write cut short by a
 /// kill) is dropped instead of being an error: used when resuming a run.
 /// Throws parse_error naming file, line and field.
-inline csv_table parse_table(const std::string& text, const std::string& file, bool allow_truncated_tail = false) {
+inline csv_table parse_table(const std::string& text, const std::string& file, bool allow_truncated_tail = false,
+                             cor_sum_check sums = cor_sum_check::here) {
   csv_table table;
   bool have_header = false;
   std::vector<std::string> columns;
@@ -354,9 +382,10 @@ inline csv_table parse_table(const std::string& text, const std::string& file, b
                         (record.fields.size() < columns.size() ? " (truncated row?)" : ""));
     const detail::row_checker check(file, line_no, columns, record.fields);
     record.index = check.integer(0, std::int64_t(1) << 50);
-    if (table.kind == table_kind::cor)
+    if (table.kind == table_kind::cor) {
       detail::check_cor_row(check);
-    else
+      if (sums == cor_sum_check::here) detail::check_cor_sum(check);
+    } else
       detail::check_sticking_row(check);
     record.text = std::move(line);
     table.rows.push_back(std::move(record));

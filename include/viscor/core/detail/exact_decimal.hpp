@@ -94,6 +94,11 @@ class exact_decimal {
   }
 
   int sign() const { return m_mantissa == 0 ? 0 : (m_mantissa < 0 ? -1 : 1); }
+  /// Exponent of the leading decimal digit (x = d.ddd * 10^leading_exponent); x != 0.
+  long long leading_exponent() const {
+    const std::string digits = (m_mantissa < 0 ? integer(-m_mantissa) : m_mantissa).str();
+    return m_exponent + static_cast<long long>(digits.size()) - 1;
+  }
   bool is_zero() const { return m_mantissa == 0; }
 
   friend exact_decimal operator+(const exact_decimal& a, const exact_decimal& b) {
@@ -144,11 +149,6 @@ class exact_decimal {
   integer scaled_to(int k) const {
     if (k >= m_exponent) return m_mantissa;
     return m_mantissa * boost::multiprecision::pow(integer(10), static_cast<unsigned>(m_exponent - k));
-  }
-  // Exponent of the leading decimal digit (x = d.ddd * 10^leading_exponent); x != 0.
-  long long leading_exponent() const {
-    const std::string digits = (m_mantissa < 0 ? integer(-m_mantissa) : m_mantissa).str();
-    return m_exponent + static_cast<long long>(digits.size()) - 1;
   }
   // Strips trailing zeros so that equal numbers have equal representations.
   void normalise() {

@@ -69,7 +69,8 @@ struct impact_constants {
 /// The constants of (law, gamma, g) in Real: the one place that builds
 /// impact_constants (the Taylor solver and the tests call it). The endpoint
 /// variable is u = s^Q for rational exponents, Q = lcm of the denominators,
-/// unless Q > 64 or Q alpha or Q beta > 512; else u = exp(sigma).
+/// unless Q or Q alpha or Q beta is too large (exponent_multiples::fit_root_variable);
+/// else u = exp(sigma).
 template <class Real>
 impact_constants<Real> make_impact_constants(const contact_law& law, const Real& gamma, const Real& g) {
   impact_constants<Real> c;
@@ -89,12 +90,9 @@ impact_constants<Real> make_impact_constants(const contact_law& law, const Real&
   // denominators the exponential variable is cheaper and just as exact.
   if (law.alpha.is_rational() && law.beta.is_rational()) {
     const exponent_multiples m = law.multiples();
-    if (m.Q <= 64) {
-      const long q = m.Q, qa = m.Q_alpha, qb = m.Q_beta;
-      if (qa <= 512 && qb <= 512) {
-        c.use_root_variable = true;
-        c.Q = q, c.Q_alpha = qa, c.Q_beta = qb;
-      }
+    if (m.fit_root_variable()) {
+      c.use_root_variable = true;
+      c.Q = m.Q, c.Q_alpha = m.Q_alpha, c.Q_beta = m.Q_beta;
     }
   }
   return c;
