@@ -83,6 +83,21 @@ TEST(CliCor, PrecisionNamesTheArithmeticAndItsEscalation) {
             "double");
 }
 
+// Double has the same exponent range: at 15 digits, gamma = 1e-305 under g = 1e6 leaves
+// it (1 - e had 5 right digits of 17), runs in long double and says so.
+TEST(CliCor, DoubleEscalatesWhereItsRangeWouldLoseDigits) {
+  if (!cli_built()) GTEST_SKIP() << "viscor CLI not built";
+  const auto r = run_cli("cor --model linear --gamma 1e-305 --g 1e6 --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["precision"]["arithmetic"], "long double") << j["precision"];
+  EXPECT_EQ(j["precision"]["escalated_from"], "double") << j["precision"];
+  viscor::scoped_precision digits(50);
+  const mpfr_real one_minus_e = viscor::parse_real<mpfr_real>(j["one_minus_e"].get<std::string>(), "1 - e");
+  const auto exact = viscor::exact_cor<mpfr_real>(viscor::law_by_name("linear"), mpfr_real("1e-305"), mpfr_real("1e6"));
+  EXPECT_GE(viscor::test::agreeing_digits(one_minus_e, exact->one_minus_e), 15.0) << j["one_minus_e"];
+}
+
 TEST(CliCor, BadInputNamesTheValue) {
   if (!cli_built()) GTEST_SKIP() << "viscor CLI not built";
   auto r = run_cli("cor --model linear --gamma -1");

@@ -15,7 +15,6 @@
 
 #include <fstream>
 #include <sstream>
-#include <typeinfo>
 
 #include <cstdint>
 #include <limits>
@@ -304,8 +303,7 @@ struct dispatched_solve {
 dispatched_solve solve_at_digits(int digits, const contact_law& law, const std::string& gamma, const std::string& g) {
   return with_working_precision(digits, [&]<class Real>() {
     const impact_result<Real> r = solve_impact<Real>(law, parse_real<Real>(gamma, "gamma"), parse_real<Real>(g, "g"));
-    dispatched_solve out{typeid(Real) == typeid(double_double) ? "double-double" : typeid(Real) == typeid(quad) ? "float128" : "other",
-                         r.outcome, 0, 0, 0};
+    dispatched_solve out{to_string(scalar_kind_of<Real>()), r.outcome, 0, 0, 0};
     if constexpr (std::is_same_v<Real, double_double>) {
       out.e = exact(r.e), out.one_minus_e = exact(r.one_minus_e), out.error_estimate = exact(r.error_estimate);
     } else {
@@ -341,6 +339,24 @@ TEST(DoubleDoubleWorkingPrecision, UnderflowingCoefficientsEscalateAndKeepTheDig
   EXPECT_EQ(solve_at_digits(25, law, "0.05", "1e6").type, "double-double");  // an ordinary damping stays
 }
 #endif
+
+// Double has double-double's exponent range and the same hazard: at gamma = 1e-305 under
+// g = 1e6 its 1 - e had 5 right digits of 17 (10 at 1e-280). Such a solve escalates to
+// long double; the truth is the closed form in MPFR at 51 digits.
+TEST(DoubleWorkingPrecision, UnderflowingCoefficientsEscalateAndKeepTheDigits) {
+  const contact_law law = law_by_name("linear");
+  for (const char* gamma : {"1e-305", "1e-280", "1e-200", "1e-100"}) {
+    const dispatched_solve r = solve_at_digits(15, law, gamma, "1e6");
+    scoped_precision digits(51);
+    const auto exact_form = exact_cor(law, parse_real<mpfr_real>(gamma, "gamma"), parse_real<mpfr_real>("1e6", "g"));
+    ASSERT_TRUE(exact_form) << gamma;
+    const mpfr_float_100 truth(exact_form->one_minus_e);
+    EXPECT_LE(static_cast<double>(mpfr_float_100(abs(r.one_minus_e - truth) / truth)), 1e-14)
+        << gamma << " (" << r.type << "): 1 - e " << r.one_minus_e.str(20) << ", closed form " << truth.str(20);
+  }
+  EXPECT_EQ(solve_at_digits(15, law, "1e-305", "1e6").type, "long double");
+  EXPECT_EQ(solve_at_digits(15, law, "0.05", "1e6").type, "double");  // an ordinary damping stays
+}
 
 TEST(DoubleDoubleWorkingPrecision, NineteenToThirtyOneDigitsRunInIt) {
   for (const int digits : {19, 25, 31})

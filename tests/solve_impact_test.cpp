@@ -225,6 +225,13 @@ TEST(SolveImpact, ExtremesGiveFiniteResults) {
           // g = 1e12 in double: e^2 ~ 1 drowns in g u ~ 1e16; saying so is allowed.
           EXPECT_GE(g, 1e6) << e.what();
           continue;
+        } catch (const exponent_range_exceeded& e) {
+          // gamma = 1e-300: Taylor coefficients of the dissipated energy below double's
+          // normal range could cost 1 - e (about 1e-300) its digits; with_working_precision
+          // solves in long double instead
+          // (DoubleWorkingPrecision.UnderflowingCoefficientsEscalateAndKeepTheDigits).
+          EXPECT_EQ(gamma, 1e-300) << e.what();
+          continue;
         }
         EXPECT_TRUE(isfinite(r.e) && isfinite(r.one_minus_e) && isfinite(r.energy_residual));
         EXPECT_TRUE(r.e >= 0 && r.e <= 1);

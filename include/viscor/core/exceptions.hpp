@@ -22,8 +22,9 @@ struct precision_unavailable : invalid_parameter {
 };
 
 /// A value outside the exponent range in which the scalar type keeps its digits (a
-/// double-double below 2^-939): with_working_precision then runs the computation again
-/// in a type with a wider range.
+/// double-double below 2^-939, a Taylor coefficient of a double or double-double solve
+/// below the normal range where it matters): with_working_precision then runs the
+/// computation again in a type with a wider range.
 struct exponent_range_exceeded : precision_unavailable {
   using precision_unavailable::precision_unavailable;
 };

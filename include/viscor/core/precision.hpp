@@ -74,14 +74,21 @@ inline scalar_kind scalar_for_digits(int digits) {
 
 /// Calls f.template operator()<Real>() with the scalar type for `digits`; for
 /// mpfr_real the thread's default precision is `digits` for the call's duration.
-/// Double-double keeps double's exponent range: when its call throws
-/// exponent_range_exceeded (an input or a result below 2^-939), f is called again in
-/// float128 (or MPFR), which carries the digits there, so f must be safe to call twice.
+/// Double and double-double keep double's exponent range: when their call throws
+/// exponent_range_exceeded (an input, a result or a Taylor coefficient below the
+/// normal range where it matters), f is called again in long double (for double) or
+/// float128 (or MPFR), whose wider range carries the digits there, so f must be safe
+/// to call twice.
 /// Usage: with_working_precision(50, [&]<class Real>() { ... });
 template <class F>
 decltype(auto) with_working_precision(int digits, F&& f) {
   switch (scalar_for_digits(digits)) {
-    case scalar_kind::double_: return f.template operator()<double>();
+    case scalar_kind::double_:
+      try {
+        return f.template operator()<double>();
+      } catch (const exponent_range_exceeded&) {
+        return f.template operator()<long double>();
+      }
     case scalar_kind::long_double: return f.template operator()<long double>();
 #if VISCOR_HAS_QD
     case scalar_kind::double_double:

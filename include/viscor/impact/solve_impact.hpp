@@ -46,7 +46,10 @@ impact_result<Real> undecided_unless_energy_allows(impact_result<Real> r) {
 /// undecided when a solver's rebound has e > 1 (impossible: see detail above).
 /// Throws invalid_parameter for alpha < 1, beta < 1, gamma < 0, non-finite
 /// gamma or g, a tolerance outside [0, 1) or a zero step budget; convergence_error
-/// when the step budget options.max_steps is exhausted.
+/// when the step budget options.max_steps is exhausted; exponent_range_exceeded when
+/// Real has double's exponent range (double, double-double) and a Taylor coefficient
+/// below it would cost digits (tiny gamma under a large load): with_working_precision
+/// then solves in a wider type.
 template <class Real>
 impact_result<Real> solve_impact(const contact_law& law, const Real& gamma, const Real& g,
                                  const solve_options<Real>& options = {}) {

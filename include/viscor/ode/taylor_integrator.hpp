@@ -151,21 +151,22 @@ class taylor_integrator {
   }
 
   /// Throws exponent_range_exceeded when a Taylor coefficient that underflowed could
-  /// matter at the step h, in a type that carries more digits than double within
-  /// double's exponent range (double-double): below numeric_limits<Real>::min() its low
-  /// part is subnormal, so the coefficient is known only to about 2^-1060 absolutely
+  /// matter at the step h, in a type with double's exponent range (double and
+  /// double-double): below numeric_limits<Real>::min() it is subnormal (double-double:
+  /// its low part), so the coefficient is known only to about 2^-1060 absolutely
   /// (2^-1074 per operation), an error that h^k carries into the state. It must stay
   /// below the tolerance on the component's scale (or, for a state still 0, on its
-  /// first-order change |x_i[1] h|); else with_working_precision reruns the solve in
-  /// float128. NOTE: found at tiny gamma under a large load, where the dissipated energy's
-  /// coefficients fall below 2^-969 while the linear law's entire series allow long
-  /// steps (linear law, gamma = 1e-280, g = 1e6, 25 digits: 10 of 1 - e's 31 digits right).
+  /// first-order change |x_i[1] h|); else with_working_precision reruns the solve in a
+  /// type with a wider range. NOTE: found at tiny gamma under a large load, where the
+  /// dissipated energy's coefficients fall below 2^-969 while the linear law's entire
+  /// series allow long steps (linear law, gamma = 1e-280, g = 1e6: 10 of 1 - e's 31
+  /// digits right at 25 digits; gamma = 1e-305 in double: 5 of 17).
   void require_precise_jet(const Real& h) const {
     using limits = std::numeric_limits<Real>;
-    if constexpr (limits::max_exponent <= std::numeric_limits<double>::max_exponent &&
-                  limits::digits > std::numeric_limits<double>::digits) {
+    if constexpr (limits::max_exponent <= std::numeric_limits<double>::max_exponent) {
       using std::abs;
       const Real smallest = limits::min();
+      if (!any_subnormal_coefficient(smallest)) return;  // the common case: no logarithms
       const double log_h = detail::log_abs(h), log_tolerance = detail::log_abs(m_tolerance);
       const double log_error = std::log(std::numeric_limits<double>::denorm_min()) + 14 * std::log(2.0);
       for (std::size_t i = 0; i < m_jet.size(); ++i) {
@@ -179,6 +180,15 @@ class taylor_integrator {
                                           std::to_string(i) + " underflows the working type where it matters");
       }
     }
+  }
+
+  /// True when some nonzero Taylor coefficient of order >= 1 is below `smallest`.
+  bool any_subnormal_coefficient(const Real& smallest) const {
+    using std::abs;
+    for (std::size_t i = 0; i < m_jet.size(); ++i)
+      for (std::size_t k = 1; k <= m_order; ++k)
+        if (m_jet[i][k] != 0 && abs(m_jet[i][k]) < smallest) return true;
+    return false;
   }
 
   /// The Jorba-Zou step of the current jet (see the file comment), capped at |h_max|.

@@ -450,28 +450,37 @@ class evaluator {
     // order) while 10 x its estimate still meets the tolerance (measured,
     // docs/performance.md, "scenes/evaluate.hpp"). Any later attempt steps at full precision.
     bool loose = !certified && m_options.loose_first_attempt;
+    bool beyond_real_range = false;  // Real's exponent range lost digits (taylor_integrator)
     std::string worst_bound;
     for (int attempt = 1; attempt <= m_options.max_attempts; ++attempt) {
       if constexpr (has_fixed_precision<Real>()) {
-        if (!certified && d == decimal_digits<Real>()) {
+        if (!certified && d == decimal_digits<Real>() && !beyond_real_range) {
           // In Real itself: no text round trip (it would cost as much as a loose solve in double).
-          const detail::taylor_evaluation<Real> t =
-              detail::taylor_raw<Real>(m_law, gamma, g, m_options.relative, loose ? Real(tolerance / 1000) : Real(0));
-          if (t.bound <= tolerance) {
-            evaluation<Real> r;
-            r.e = t.solve.e, r.one_minus_e = t.solve.one_minus_e, r.outcome = t.solve.outcome;
-            r.bound = t.bound, r.method = evaluation_method::taylor, r.working_digits = decimal_digits<Real>();
-            r.contact_time = t.solve.contact_time, r.attempts = attempt;
-            return r;
+          std::optional<detail::taylor_evaluation<Real>> in_real;
+          try {
+            in_real = detail::taylor_raw<Real>(m_law, gamma, g, m_options.relative,
+                                               loose ? Real(tolerance / 1000) : Real(0));
+          } catch (const exponent_range_exceeded&) {
+            beyond_real_range = true;  // with_working_precision below widens the type
           }
-          worst_bound = to_decimal_string(t.bound, 3);
-          if (loose) {
-            loose = false;
-          } else {
-            using boost::math::isfinite;
-            d += isfinite(t.bound) ? static_cast<int>(Real(ceil(log10(t.bound / tolerance)))) + 4 : d / 2 + 4;
+          if (in_real) {
+            const detail::taylor_evaluation<Real>& t = *in_real;
+            if (t.bound <= tolerance) {
+              evaluation<Real> r;
+              r.e = t.solve.e, r.one_minus_e = t.solve.one_minus_e, r.outcome = t.solve.outcome;
+              r.bound = t.bound, r.method = evaluation_method::taylor, r.working_digits = decimal_digits<Real>();
+              r.contact_time = t.solve.contact_time, r.attempts = attempt;
+              return r;
+            }
+            worst_bound = to_decimal_string(t.bound, 3);
+            if (loose) {
+              loose = false;
+            } else {
+              using boost::math::isfinite;
+              d += isfinite(t.bound) ? static_cast<int>(Real(ceil(log10(t.bound / tolerance)))) + 4 : d / 2 + 4;
+            }
+            continue;
           }
-          continue;
         }
       }
       const std::string step_tol = loose ? to_decimal_string(Real(tolerance / 1000), 3) : std::string("0");
