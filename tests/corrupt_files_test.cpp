@@ -158,7 +158,7 @@ TEST_F(CorruptTable, DamagedRowsAreRefused) {
   text.resize(end);  // the first 100 rows
   const std::string row = line_of(text, 5);  // index,law,alpha,beta,gamma,g,outcome,e,one_minus_e,...
   auto field_replaced = [&](std::size_t column, const std::string& value) {
-    std::vector<std::string> f = viscor::detail::split_csv_line(row);
+    std::vector<std::string> f = viscor::split_fields(row);
     f.at(column) = value;
     std::string line;
     for (std::size_t k = 0; k < f.size(); ++k) line += (k ? "," : "") + f[k];

@@ -39,9 +39,9 @@ std::vector<std::map<std::string, std::string>> read_named_rows(const std::strin
   if (!in) return rows;
   std::string line;
   std::getline(in, line);
-  const std::vector<std::string> names = detail::split_csv_line(line);
+  const std::vector<std::string> names = split_fields(line);
   while (std::getline(in, line)) {
-    const std::vector<std::string> fields = detail::split_csv_line(line);
+    const std::vector<std::string> fields = split_fields(line);
     std::map<std::string, std::string> row;
     for (std::size_t i = 0; i < names.size() && i < fields.size(); ++i) row[names[i]] = fields[i];
     rows.push_back(std::move(row));

@@ -224,7 +224,7 @@ TEST(TableRow, LinearRowsFromTheClosedForm) {
   // 28 significant digits: d.ddd...e-01 with 27 after the point.
   EXPECT_EQ(r.e.size(), std::string("x.").size() + 27 + std::string("e-01").size()) << r.e;
   // The line matches the header's columns.
-  EXPECT_EQ(viscor::detail::split_csv_line(viscor::csv_line(r)).size(),
+  EXPECT_EQ(viscor::split_fields(viscor::csv_line(r)).size(),
             viscor::table_columns(viscor::table_kind::cor).size());
 }
 

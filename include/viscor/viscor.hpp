@@ -31,6 +31,7 @@
 #include <viscor/core/real_types.hpp>
 #include <viscor/tables/reference_table.hpp>
 #include <viscor/core/scaling.hpp>
+#include <viscor/core/text_fields.hpp>
 #include <viscor/scenes/scene.hpp>
 #include <viscor/impact/solve_impact.hpp>
 #include <viscor/tables/sticking_threshold.hpp>

@@ -21,10 +21,12 @@
 #include <viscor/jobs/table_jobs.hpp>
 #include <viscor/jobs/unit_checks.hpp>
 #include <viscor/jobs/data_directory.hpp>
+#include <viscor/jobs/parallel_for.hpp>
 #include <viscor/jobs/surrogate_files.hpp>
 #include <viscor/jobs/surrogate_export.hpp>
 
 #include <viscor/core/precision.hpp>
+#include <viscor/core/text_fields.hpp>
 #include <viscor/impact/solve_impact.hpp>
 #include <viscor/scenes/error_map.hpp>
 #include <viscor/scenes/evaluate.hpp>
@@ -221,12 +223,7 @@ py::tuple table_columns(const std::string& path) {
   const jobs::table_format format = jobs::table_format::of_file(path);
   const csv_table t = format.read(path);
   py::list header;
-  const std::string h = format.header();
-  for (std::size_t start = 0, end; start <= h.size(); start = end + 1) {
-    end = h.find(',', start);
-    if (end == std::string::npos) end = h.size();
-    header.append(h.substr(start, end - start));
-  }
+  for (const std::string& name : split_fields(format.header())) header.append(name);
   py::list rows;
   for (const auto& r : t.rows) rows.append(py::cast(r.fields));
   return py::make_tuple(header, rows);
@@ -287,54 +284,36 @@ py::tuple evaluate(const evaluate_request& q, py::array_t<double, py::array::c_s
     options.surrogate = source ? &*source : nullptr;
     const evaluator<double> evaluate_one(q.law, options);
     // Points are handed out in blocks; the first failing point (lowest index) is reported.
-    std::atomic<py::ssize_t> next{0};
-    std::mutex failure_mutex;
-    py::ssize_t failed_at = n;
-    std::string failure;
-    int failure_kind = 0;  // 0 invalid_parameter, 1 precision, 2 certification, 3 convergence, 4 other
-    auto worker = [&] {
-      constexpr py::ssize_t block = 256;
-      for (py::ssize_t first = next.fetch_add(block); first < n; first = next.fetch_add(block)) {
-        const py::ssize_t last = std::min(n, first + block);
-        for (py::ssize_t i = first; i < last; ++i) {
-          try {
-            const evaluation<double> r = evaluate_one(pg[i], pgg[i], pt[i]);
-            pe[i] = r.e, pome[i] = r.one_minus_e, pb[i] = r.bound;
-            pm[i] = static_cast<std::int8_t>(r.method);
-            po[i] = static_cast<std::int8_t>(r.outcome);  // 0 rebound, 1 stick, 2 undecided
-          } catch (const std::exception& ex) {
-            const std::lock_guard<std::mutex> lock(failure_mutex);
-            if (i < failed_at) {
-              failed_at = i;
-              failure = ex.what();
-              failure_kind = dynamic_cast<const precision_unavailable*>(&ex)   ? 1
-                             : dynamic_cast<const invalid_parameter*>(&ex)     ? 0
-                             : dynamic_cast<const certification_error*>(&ex)   ? 2
-                             : dynamic_cast<const convergence_error*>(&ex)     ? 3
-                                                                               : 4;
-            }
-            next.store(n);  // stop the others early
-            return;
-          }
-        }
-      }
-    };
-    unsigned threads = q.threads ? q.threads : std::max(1u, std::thread::hardware_concurrency());
-    threads = static_cast<unsigned>(std::min<py::ssize_t>(threads, std::max<py::ssize_t>(1, n / 64)));
-    std::vector<std::thread> pool;
-    for (unsigned t = 1; t < threads; ++t) pool.emplace_back(worker);
-    worker();
-    for (std::thread& t : pool) t.join();
-    if (failed_at < n) {
-      const std::string message = "evaluate: point " + std::to_string(failed_at) + " (gamma = " +
-                                  to_decimal_string(pg[failed_at], 17) + ", g = " + to_decimal_string(pgg[failed_at], 17) +
-                                  ", tol = " + to_decimal_string(pt[failed_at], 3) + "): " + failure;
-      switch (failure_kind) {
-        case 0: throw invalid_parameter(message);
-        case 1: throw precision_unavailable(message);
-        case 2: throw certification_error(message);
-        case 3: throw convergence_error(message);
-        default: throw error(message);
+    jobs::parallel_for_options loop;
+    loop.block = 256;
+    const unsigned threads = q.threads ? q.threads : std::max(1u, std::thread::hardware_concurrency());
+    loop.threads = static_cast<unsigned>(std::min<py::ssize_t>(threads, std::max<py::ssize_t>(1, n / 64)));
+    const jobs::parallel_for_result run = jobs::parallel_for(
+        static_cast<std::size_t>(n),
+        [&](std::size_t i) {
+          const evaluation<double> r = evaluate_one(pg[i], pgg[i], pt[i]);
+          pe[i] = r.e, pome[i] = r.one_minus_e, pb[i] = r.bound;
+          pm[i] = static_cast<std::int8_t>(r.method);
+          po[i] = static_cast<std::int8_t>(r.outcome);  // 0 rebound, 1 stick, 2 undecided
+        },
+        loop);
+    if (run.failed()) {
+      const std::size_t i = run.failed_at;
+      const std::string where = "evaluate: point " + std::to_string(i) + " (gamma = " + to_decimal_string(pg[i], 17) +
+                                ", g = " + to_decimal_string(pgg[i], 17) + ", tol = " + to_decimal_string(pt[i], 3) +
+                                "): ";
+      try {
+        std::rethrow_exception(run.failure);
+      } catch (const precision_unavailable& ex) {  // before invalid_parameter, its base
+        throw precision_unavailable(where + ex.what());
+      } catch (const invalid_parameter& ex) {
+        throw invalid_parameter(where + ex.what());
+      } catch (const certification_error& ex) {
+        throw certification_error(where + ex.what());
+      } catch (const convergence_error& ex) {
+        throw convergence_error(where + ex.what());
+      } catch (const std::exception& ex) {
+        throw error(where + ex.what());
       }
     }
   }

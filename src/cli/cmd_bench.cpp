@@ -19,6 +19,7 @@
 #include "cli_common.hpp"
 #include "command_registry.hpp"
 #include <viscor/core/field_names.hpp>
+#include <viscor/core/text_fields.hpp>
 #include <viscor/jobs/data_directory.hpp>
 #include <viscor/jobs/surrogate_files.hpp>
 
@@ -231,9 +232,7 @@ struct bench_command {
 
   std::vector<int> digit_list() const {
     std::vector<int> out;
-    std::stringstream in(precisions);
-    for (std::string item; std::getline(in, item, ',');) {
-      if (item.empty()) continue;
+    for (const std::string& item : split_list(precisions, "--precisions")) {
       if (item.find_first_not_of("0123456789") != std::string::npos)
         throw invalid_parameter("--precisions expects comma-separated digit counts, got '" + item + "'");
       out.push_back(std::stoi(item));
@@ -247,10 +246,7 @@ struct bench_command {
     if (surrogate_passes < 1) throw invalid_parameter("--passes must be >= 1, got " + std::to_string(surrogate_passes));
     if (taylor_points < 1) throw invalid_parameter("--taylor-points must be >= 1, got " + std::to_string(taylor_points));
     std::vector<contact_law> law_list;
-    {
-      std::stringstream in(laws);
-      for (std::string item; std::getline(in, item, ',');) law_list.push_back(law_by_name(item));
-    }
+    for (const std::string& item : split_list(laws, "--laws")) law_list.push_back(law_by_name(item));
     std::ostringstream text;
     text << "| law | points | stream | median | p99 | max (slowest point) | mean in a stream | Taylor double (mean) | "
             "Taylor / surrogate |\n|---|---|---|---|---|---|---|---|---|\n";
@@ -314,10 +310,7 @@ struct bench_command {
     if (surrogate_mode) return run_surrogate();
     if (!(min_time >= 0)) throw invalid_parameter("--min-time must be >= 0");
     std::vector<contact_law> law_list;
-    {
-      std::stringstream in(laws);
-      for (std::string item; std::getline(in, item, ',');) law_list.push_back(law_by_name(item));
-    }
+    for (const std::string& item : split_list(laws, "--laws")) law_list.push_back(law_by_name(item));
     std::map<std::string, std::shared_ptr<error_map>> loaded;
     if (!maps.empty() && !std::filesystem::is_directory(maps))
       throw invalid_parameter("--error-maps '" + maps + "' is not a directory");

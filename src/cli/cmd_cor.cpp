@@ -5,10 +5,10 @@
 #include "command_registry.hpp"
 #include "physical_options.hpp"
 
+#include <viscor/core/text_fields.hpp>
 #include <viscor/jobs/cor_job.hpp>
 #include <viscor/jobs/point_batch.hpp>
 
-#include <sstream>
 
 namespace viscor::cli::cmd_cor {  // named: the subcommands share translation units (unity build)
 namespace {
@@ -17,9 +17,7 @@ namespace {
 // Still read, with a warning; its keys go to the same options as --m, --k, ...
 void read_deprecated_physical(const std::string& text, physical_options& p) {
   deprecation_warning("--physical m=..,k=..", "--m .. --k .. --gamma0 .. --v0 .. --gravity .. [--force ..]");
-  std::stringstream in(text);
-  std::string item;
-  while (std::getline(in, item, ',')) {
+  for (const std::string& item : split_fields(text)) {
     const auto eq = item.find('=');
     if (eq == std::string::npos)
       throw invalid_parameter("--physical expects key=value pairs separated by commas, got '" + item + "'");

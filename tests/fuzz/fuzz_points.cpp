@@ -56,7 +56,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       decided = true;
       csv = line[line.find_first_not_of(" \t")] != '{';
       if (csv) {
-        header = cli::detail::split_csv(line);
+        header = viscor::split_trimmed_fields(line);
         cli::point_text probe;
         for (std::size_t c = 0; c < header.size(); ++c)
           if (!cli::detail::point_field(probe, header[c]) ||
@@ -68,7 +68,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     viscor::fuzz::refusal_or_result([&] {
       cli::point_text p;
       if (csv) {
-        const auto fields = cli::detail::split_csv(line);
+        const auto fields = viscor::split_trimmed_fields(line);
         fuzz_require(fields.size() == static_cast<std::size_t>(std::count(line.begin(), line.end(), ',')) + 1 ||
                          line.empty(),
                      "a CSV row splits into a number of fields other than its commas + 1: '" + line + "'");

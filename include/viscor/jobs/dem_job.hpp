@@ -14,6 +14,7 @@
 
 #include <viscor/core/precision.hpp>
 #include <viscor/core/real_io.hpp>
+#include <viscor/core/text_fields.hpp>
 #include <viscor/dem/dem_calibration.hpp>
 #include <viscor/dem/deck_snippet.hpp>
 #include <viscor/dem/drop_deck.hpp>
@@ -51,21 +52,6 @@ struct dem_request {
 };
 
 namespace detail {
-
-/// The comma-separated items of option `name`'s value; an empty item ("0.1,,1", a
-/// leading or trailing comma) is refused, naming the option and its value.
-inline std::vector<std::string> split_list(const std::string& text, const std::string& name) {
-  std::vector<std::string> items;
-  std::size_t start = 0;
-  for (;;) {
-    const std::size_t comma = text.find(',', start);
-    items.push_back(text.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
-    if (items.back().empty())
-      throw invalid_parameter(name + " has an empty entry in '" + text + "' (a number between every two commas)");
-    if (comma == std::string::npos) return items;
-    start = comma + 1;
-  }
-}
 
 struct dem_job : dem_request {
   void require(const std::string& value, const char* option, const char* what) const {

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <viscor/core/field_names.hpp>
+#include <viscor/core/text_fields.hpp>
 #include <viscor/jobs/files.hpp>
 
 #include <viscor/config.hpp>
@@ -17,7 +18,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -50,10 +50,7 @@ struct errormap_summary {
 namespace detail {
 
 inline std::vector<std::string> edge_list(const std::string& text, const std::string& name) {
-  std::vector<std::string> out;
-  std::stringstream in(text);
-  std::string item;
-  while (std::getline(in, item, ',')) out.push_back(item);
+  const std::vector<std::string> out = text.empty() ? std::vector<std::string>{} : split_fields(text);
   if (out.size() < 2) throw invalid_parameter("--" + name + " needs at least two comma-separated edges, got '" + text + "'");
   return out;
 }

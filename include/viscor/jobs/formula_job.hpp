@@ -17,6 +17,7 @@
 #include <viscor/core/contact_law.hpp>
 #include <viscor/core/exceptions.hpp>
 #include <viscor/core/real_io.hpp>
+#include <viscor/core/text_fields.hpp>
 #include <viscor/scenes/error_map.hpp>
 #include <viscor/scenes/formula_check.hpp>
 
@@ -52,13 +53,6 @@ inline std::string option_value(const std::string& command, const std::string& o
   return {};
 }
 
-inline std::vector<std::string> split_commas(const std::string& text) {
-  std::vector<std::string> out;
-  std::stringstream in(text);
-  for (std::string item; std::getline(in, item, ',');) out.push_back(item);
-  return out;
-}
-
 }  // namespace detail
 
 /// The truth for `law` from the committed error map of the data directory (`data`:
@@ -86,8 +80,12 @@ inline formula_reference committed_formula_reference(const contact_law& law, con
   std::istringstream names(reference.substr(prefix.size()));
   for (std::string name; names >> name;)
     r.tables.push_back((std::filesystem::path(dir) / std::filesystem::path(name).filename()).string());
-  r.grid.gamma_edges = detail::split_commas(detail::option_value(command, "--gamma-edges"));
-  r.grid.g_edges = detail::split_commas(detail::option_value(command, "--g-edges"));
+  const auto edges = [&](const char* option) {  // a missing option: no edges, refused by the grid's check
+    const std::string text = detail::option_value(command, option);
+    return text.empty() ? std::vector<std::string>{} : split_fields(text);
+  };
+  r.grid.gamma_edges = edges("--gamma-edges");
+  r.grid.g_edges = edges("--g-edges");
   const std::string min_samples = detail::option_value(command, "--min-samples");
   if (!min_samples.empty()) {
     if (min_samples.size() > 6 || min_samples.find_first_not_of("0123456789") != std::string::npos ||
@@ -158,7 +156,7 @@ inline formula_values parse_formula_values(const std::string& text, const std::s
     ++line_number;
     if (!line.empty() && line.back() == '\r') line.pop_back();
     if (line.empty() || line[0] == '#') continue;
-    const std::vector<std::string> fields = detail::split_commas(line);
+    const std::vector<std::string> fields = split_fields(line);
     const std::string where = name + ":" + std::to_string(line_number) + ": ";
     if (header.empty()) {
       header = fields;

@@ -9,10 +9,12 @@
 
 #include <viscor/jobs/json_fields.hpp>
 #include <viscor/jobs/files.hpp>
+#include <viscor/jobs/parallel_for.hpp>
 #include <viscor/jobs/cor_job.hpp>
 #include <viscor/jobs/table_spec.hpp>
 
 #include <viscor/impact/solve_impact.hpp>
+#include <viscor/core/text_fields.hpp>
 
 #include <algorithm>
 #include <atomic>
@@ -21,7 +23,6 @@
 #include <fstream>
 #include <functional>
 #include <iostream>
-#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
@@ -45,18 +46,6 @@ struct point_text {
 };
 
 namespace detail {
-
-inline std::vector<std::string> split_csv(const std::string& line) {
-  std::vector<std::string> out;
-  std::stringstream in(line);
-  std::string item;
-  while (std::getline(in, item, ',')) {
-    const auto first = item.find_first_not_of(" \t\r"), last = item.find_last_not_of(" \t\r");
-    out.push_back(first == std::string::npos ? std::string() : item.substr(first, last - first + 1));
-  }
-  if (!line.empty() && line.back() == ',') out.emplace_back();
-  return out;
-}
 
 inline std::string* point_field(point_text& p, const std::string& name) {
   if (name == "law") return &p.law;
@@ -146,27 +135,22 @@ inline std::size_t solve_points(std::istream& in, const std::string& name, const
   auto flush = [&] {
     std::vector<json> results(batch.size());
     std::vector<char> refused(batch.size(), 0);
-    std::atomic<std::size_t> next{0};
-    auto work = [&] {
-      for (std::size_t i; (i = next++) < batch.size();) {
-        if (!batch_errors[i].empty()) {
-          results[i] = json{{"line", batch[i].line}, {"error", batch_errors[i]}};
-          refused[i] = 1;
-          continue;
-        }
-        bool r = false;
-        results[i] = detail::solve_point(batch[i], o, r);
-        refused[i] = r;
-      }
-    };
-    const unsigned n = std::min<std::size_t>(o.threads, batch.size());
-    if (n <= 1) {
-      work();
-    } else {
-      std::vector<std::thread> pool;
-      for (unsigned t = 0; t < n; ++t) pool.emplace_back(work);
-      for (auto& t : pool) t.join();
-    }
+    parallel_for_options options;
+    options.threads = o.threads;
+    const parallel_for_result run = parallel_for(
+        batch.size(),
+        [&](std::size_t i) {
+          if (!batch_errors[i].empty()) {
+            results[i] = json{{"line", batch[i].line}, {"error", batch_errors[i]}};
+            refused[i] = 1;
+            return;
+          }
+          bool r = false;
+          results[i] = detail::solve_point(batch[i], o, r);
+          refused[i] = r;
+        },
+        options);
+    if (run.failed()) std::rethrow_exception(run.failure);  // solve_point answers each point's own error
     for (std::size_t i = 0; i < batch.size(); ++i) {
       emit(results[i]);
       refused_count += refused[i];
@@ -190,7 +174,7 @@ inline std::size_t solve_points(std::istream& in, const std::string& name, const
       decided = true;
       csv = line[line.find_first_not_of(" \t")] != '{';
       if (csv) {
-        header = detail::split_csv(line);
+        header = split_trimmed_fields(line);
         point_text probe;
         for (std::size_t c = 0; c < header.size(); ++c) {
           const std::string& column = header[c];
@@ -209,7 +193,7 @@ inline std::size_t solve_points(std::istream& in, const std::string& name, const
     std::string problem;
     try {
       if (csv) {
-        const auto fields = detail::split_csv(line);
+        const auto fields = split_trimmed_fields(line);
         if (fields.size() != header.size())
           throw invalid_parameter(std::to_string(fields.size()) + " fields where the header names " +
                                   std::to_string(header.size()));

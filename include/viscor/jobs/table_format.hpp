@@ -153,7 +153,7 @@ inline csv_table parse_proven_table(const std::string& text, const std::string& 
           have_header = true;
           return;
         }
-        const std::vector<std::string> fields = viscor::detail::split_csv_line(line);
+        const std::vector<std::string> fields = viscor::split_fields(line);
         if (fields.size() != columns.size())
           throw parse_error(where + ": expected " + std::to_string(columns.size()) + " fields (" +
                             proven_table_header() + "), got " + std::to_string(fields.size()) +
@@ -168,7 +168,7 @@ inline csv_table parse_proven_table(const std::string& text, const std::string& 
   for (std::size_t i = 0; i < table.rows.size(); ++i) {
     csv_record& row = table.rows[i];
     row.text = lines[i];
-    row.fields = viscor::detail::split_csv_line(row.text);
+    row.fields = viscor::split_fields(row.text);
     const viscor::detail::row_checker check(file, row.line, columns, row.fields);
     detail::check_proven_fields(check, n_cor);  // first: a value outside its enclosure says more
     viscor::detail::check_cor_sum(check);

@@ -9,6 +9,7 @@
 
 #include <viscor/jobs/json_fields.hpp>
 #include <viscor/jobs/files.hpp>
+#include <viscor/jobs/parallel_for.hpp>
 #include <viscor/jobs/provenance.hpp>
 #include <viscor/jobs/table_format.hpp>
 
@@ -349,21 +350,23 @@ inline table_run_summary run_table_job(const table_job& job) {
     std::atomic<bool> stop_requested{false};  // by should_stop, or by the test seam without signals
     detail::line_appender out(partial);
     detail::progress_meter progress(job.indices.size(), done.size(), job.quiet);
-    std::mutex mutex;
-    std::condition_variable wake;
-    std::atomic<std::size_t> next{0};
-    std::size_t finished = 0, running = 0;
-    std::exception_ptr failure;
-    std::atomic<bool> stop{false};
-
-    auto worker = [&] {
-      for (;;) {
-        if (stop || stop_requested || detail::interrupts > 0) return;
-        const std::size_t k = next++;
-        if (k >= pending.size()) return;
-        std::string line;
-        try {
-          line = job.compute_line(pending[k]);
+    std::mutex mutex;  // guards out and finished
+    std::size_t finished = 0;
+    parallel_for_options options;
+    options.threads = static_cast<unsigned>(std::max(1, job.threads));
+    options.keep_going = [&] { return !stop_requested && detail::interrupts == 0; };
+    options.poll = [&] {
+      {
+        std::lock_guard lock(mutex);
+        progress.update(finished);
+      }
+      if (job.should_stop && !stop_requested && job.should_stop()) stop_requested = true;
+      return !stop_requested && detail::interrupts == 0;
+    };
+    const parallel_for_result run = parallel_for(
+        pending.size(),
+        [&](std::size_t k) {
+          const std::string line = job.compute_line(pending[k]);
           std::lock_guard lock(mutex);
           out.append(line);
           ++finished;
@@ -371,52 +374,21 @@ inline table_run_summary run_table_job(const table_job& job) {
             if (job.handle_signals) std::raise(SIGINT);  // exactly what a Ctrl-C does
             else stop_requested = true;
           }
-        } catch (...) {
-          std::lock_guard lock(mutex);
-          if (!failure) failure = std::current_exception();
-          stop = true;
-        }
-        wake.notify_all();
-      }
-    };
-    const std::size_t n_threads =
-        std::max<std::size_t>(1, std::min<std::size_t>(static_cast<std::size_t>(job.threads), pending.size()));
-    std::vector<std::thread> pool;
-    const std::size_t n_workers = pending.empty() ? 0 : n_threads;
-    running = n_workers;  // NOTE: set before any worker starts; each one decrements it when done
-    for (std::size_t t = 0; t < n_workers; ++t)
-      pool.emplace_back([&] {
-        worker();
-        std::lock_guard lock(mutex);
-        --running;
-        wake.notify_all();
-      });
-    {
-      std::unique_lock lock(mutex);
-      while (running > 0) {
-        wake.wait_for(lock, milliseconds(200));
-        progress.update(finished);
-        if (job.should_stop && !stop_requested) {
-          lock.unlock();  // the callback may take its time (the Python module takes the GIL)
-          if (job.should_stop()) stop_requested = true;
-          lock.lock();
-        }
-      }
-    }
-    for (auto& t : pool) t.join();
+        },
+        options);
     progress.update(finished, /*final=*/true);
 
     const double wall = duration<double>(steady_clock::now() - wall_start).count();
     const bool interrupted = detail::interrupts > 0 || stop_requested;
-    if (failure || interrupted) {
+    if (run.failed() || interrupted) {
       meta["wall_time_seconds"] = earlier_wall + wall;
       meta["sessions"] = earlier_sessions + 1;
       write_atomically(partial_meta, meta.dump(2) + "\n");
       const std::string kept = std::to_string(done.size() + finished) + " of " +
                                std::to_string(job.indices.size()) + " rows are done and kept in '" + partial + "'";
-      if (failure) {
+      if (run.failed()) {
         try {
-          std::rethrow_exception(failure);
+          std::rethrow_exception(run.failure);
         } catch (const error& e) {
           throw error(std::string(e.what()) + "\n  " + kept + "; fix the cause and rerun with --resume");
         } catch (const std::exception& e) {

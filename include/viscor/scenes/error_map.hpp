@@ -27,6 +27,7 @@
 #include <viscor/core/contact_law.hpp>
 #include <viscor/core/exceptions.hpp>
 #include <viscor/core/outcome.hpp>
+#include <viscor/core/text_fields.hpp>
 
 #include <algorithm>
 #include <array>
@@ -208,15 +209,6 @@ class error_map {
 
 namespace detail {
 
-inline std::vector<std::string> split_map_line(const std::string& line) {
-  std::vector<std::string> out;
-  std::string field;
-  std::istringstream in(line);
-  while (std::getline(in, field, ',')) out.push_back(field);
-  if (!line.empty() && line.back() == ',') out.emplace_back();
-  return out;
-}
-
 inline double parse_map_number(const std::string& text, const std::string& where) {
   if (!looks_like_decimal(text)) throw parse_error(where + ": expected a decimal number, got '" + text + "'");
   const double x = std::strtod(text.c_str(), nullptr);
@@ -236,7 +228,7 @@ inline std::string shortest(double x) {
 
 inline std::string map_header() {
   std::string h = "gamma_lo,gamma_hi,g_lo,g_hi,samples,outcome";
-  for (auto a : all_approximations) h += "," + to_string(a);
+  for (auto a : all_approximations) h.append(",").append(to_string(a));
   return h;
 }
 
@@ -251,7 +243,7 @@ inline error_map parse_error_map(const std::string& text, const std::string& fil
   bool have_header = false;
   std::string law_name, alpha, beta;
   std::optional<double> safety, floor;
-  const std::vector<std::string> columns = detail::split_map_line(detail::map_header());
+  const std::vector<std::string> columns = split_fields(detail::map_header());
   while (std::getline(in, line)) {
     ++number;
     const std::string at = file + ":" + std::to_string(number);
@@ -272,7 +264,7 @@ inline error_map parse_error_map(const std::string& text, const std::string& fil
       else map.metadata.emplace_back(key, value);
       continue;
     }
-    const std::vector<std::string> f = detail::split_map_line(line);
+    const std::vector<std::string> f = split_fields(line);
     if (!have_header) {
       if (f != columns) throw parse_error(at + ": expected the column header '" + detail::map_header() + "'");
       have_header = true;

@@ -297,7 +297,7 @@ inline std::vector<baseline_entry> read_error_baseline(const std::string& path) 
       header = true;
       continue;
     }
-    const std::vector<std::string> f = detail::split_csv_line(line);
+    const std::vector<std::string> f = split_fields(line);
     if (f.size() != 13)
       throw parse_error(path + ":" + std::to_string(n) + ": expected 13 fields, got " + std::to_string(f.size()));
     baseline_entry b;

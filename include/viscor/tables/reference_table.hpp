@@ -26,6 +26,7 @@
 #include <viscor/core/exceptions.hpp>
 #include <viscor/tables/grid_spec.hpp>
 #include <viscor/core/outcome.hpp>
+#include <viscor/core/text_fields.hpp>
 
 #include <algorithm>
 #include <cstdint>
@@ -154,17 +155,6 @@ struct csv_table {
 };
 
 namespace detail {
-
-inline std::vector<std::string> split_csv_line(const std::string& line) {
-  std::vector<std::string> fields;
-  std::size_t start = 0;
-  for (;;) {
-    const std::size_t comma = line.find(',', start);
-    fields.push_back(line.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
-    if (comma == std::string::npos) return fields;
-    start = comma + 1;
-  }
-}
 
 /// Field checks for one row; every error names file, line and field.
 class row_checker {
@@ -374,7 +364,7 @@ inline csv_table parse_table(const std::string& text, const std::string& file, b
       return;
     }
     csv_record record;
-    record.fields = detail::split_csv_line(line);
+    record.fields = split_fields(line);
     record.line = line_no;
     if (record.fields.size() != columns.size())
       throw parse_error(where + ": expected " + std::to_string(columns.size()) + " fields (" +
