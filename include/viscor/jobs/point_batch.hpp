@@ -17,14 +17,12 @@
 #include <viscor/core/text_fields.hpp>
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
 #include <functional>
 #include <iostream>
 #include <string>
-#include <thread>
 #include <vector>
 
 namespace viscor::jobs {

@@ -20,7 +20,6 @@
 #include <atomic>
 #include <cerrno>
 #include <chrono>
-#include <condition_variable>
 #include <csignal>
 #include <cstdint>
 #include <cstdio>
@@ -39,7 +38,6 @@
 #include <sstream>
 #include <string>
 #include <utility>
-#include <thread>
 #include <unistd.h>
 #include <vector>
 
