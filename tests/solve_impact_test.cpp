@@ -13,6 +13,7 @@
 
 #include "test_utils.hpp"
 
+#include <cfenv>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -249,6 +250,23 @@ TEST(SolveImpact, ExtremesGiveFiniteResults) {
           EXPECT_LE(std::abs(r.e - exact->e), 1e-14);
         }
       }
+}
+
+// The solver reads the floating-point environment's underflow flag to find Taylor
+// coefficients below double's range (taylor_integrator::compute_jet); a flag the caller
+// had raised must still be raised after a solve, in double and double-double.
+TEST(SolveImpact, KeepsTheCallersUnderflowFlag) {
+  const contact_law law = law_by_name("tsuji");
+  std::feraiseexcept(FE_UNDERFLOW);
+  const impact_result<double> r = solve_impact<double>(law, 0.1, 1.0);
+  EXPECT_NE(std::fetestexcept(FE_UNDERFLOW), 0) << "a double solve cleared the caller's underflow flag";
+  EXPECT_EQ(r.outcome, impact_outcome::rebound);
+#if VISCOR_HAS_QD
+  std::feraiseexcept(FE_UNDERFLOW);
+  (void)solve_impact<double_double>(law, double_double(0.1), double_double(1));
+  EXPECT_NE(std::fetestexcept(FE_UNDERFLOW), 0) << "a double-double solve cleared the caller's underflow flag";
+#endif
+  std::feclearexcept(FE_UNDERFLOW);
 }
 
 TEST(SolveImpact, AtRestWithoutATrapIsAStickAtAnUnknownTime) {
