@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # A corpus of what the command line prints, for refactorings that must not change it
-# (issue 54: jobs that return types, front ends that render them): every subcommand,
+# (the typed jobs: jobs that return types, front ends that render them): every subcommand,
 # its readable text and its JSON, sticks and undecided outcomes, physical inputs, the
 # DEM entries of each code, files a command writes, and refusals with their exit code.
 # tools/solver_corpus.sh covers the solvers' numbers in depth; this covers the forms.
