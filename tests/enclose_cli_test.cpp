@@ -1,5 +1,5 @@
 // `viscor prove` and `viscor cor --prove` (src/cli/cmd_prove.cpp, cmd_cor.cpp,
-// jobs/proof_report.hpp): their enclosures contain the closed forms (Tsuji at
+// jobs/cor_render.hpp): their enclosures contain the closed forms (Tsuji at
 // g = 0, the linear law under load; exact/ in MPFR at 60 digits, not the proof),
 // both use the same JSON names (docs/json-schema.md) with the same values, and bad
 // input (a non-rational exponent: "not provable") exits 2 with a message naming the

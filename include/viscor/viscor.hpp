@@ -82,9 +82,7 @@
 #include <viscor/jobs/surrogate_export.hpp>
 #include <viscor/jobs/surrogate_files.hpp>
 #include <viscor/jobs/table_jobs.hpp>
-#if defined(VISCOR_WITH_ENCLOSE)
-#include <viscor/jobs/proof_report.hpp>
-#endif
+#include <viscor/jobs/cor_render.hpp>
 #endif
 
 /// @namespace viscor

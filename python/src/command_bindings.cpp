@@ -9,6 +9,7 @@
 #include <viscor/jobs/approx_job.hpp>
 #include <viscor/jobs/calibrate_job.hpp>
 #include <viscor/jobs/cor_job.hpp>
+#include <viscor/jobs/cor_render.hpp>
 #include <viscor/jobs/dem_job.hpp>
 #include <viscor/jobs/exact_job.hpp>
 #include <viscor/jobs/formula_job.hpp>
@@ -64,15 +65,19 @@ std::optional<std::string> optional_text(const std::string& text) {
   return text.empty() ? std::nullopt : std::optional<std::string>(text);
 }
 
+// A job's JSON object: a rendered one as it is, a command_output's object.
+const jobs::json& object_of(const jobs::json& j) { return j; }
+const jobs::json& object_of(const jobs::command_output& out) { return out.object; }
+
 // Runs a job without the GIL and returns its JSON object as Python objects.
 template <class Job>
 py::object run_released(const Job& job) {
-  jobs::command_output out;
+  jobs::json object;
   {
     py::gil_scoped_release release;
-    out = job();
+    object = object_of(job());
   }
-  return to_python(out.object);
+  return to_python(object);
 }
 
 py::object exact(const std::string& name, const std::string& alpha, const std::string& beta, const std::string& gamma,
@@ -147,7 +152,7 @@ py::object physical_cor(const std::string& name, const std::string& alpha, const
   q.tolerance = tolerance, q.digits = digits, q.certify = certify;
   if (max_steps < 0) throw invalid_parameter("max_steps must be >= 1, got " + std::to_string(max_steps));
   if (max_steps > 0) q.max_steps = static_cast<std::size_t>(max_steps);
-  return run_released([&] { return jobs::run_cor(q); });
+  return run_released([&] { return render::cor_json(jobs::run_cor(q)); });
 }
 
 using double_array = py::array_t<double, py::array::c_style | py::array::forcecast>;

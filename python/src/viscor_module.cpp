@@ -16,6 +16,7 @@
 #include "python_objects.hpp"
 
 #include <viscor/jobs/cor_job.hpp>
+#include <viscor/jobs/cor_render.hpp>
 #include <viscor/jobs/point_batch.hpp>
 #include <viscor/jobs/scene_job.hpp>
 #include <viscor/jobs/table_jobs.hpp>
@@ -145,8 +146,7 @@ json cor_json(const cor_request& q) {
     options.method = q.method == "taylor" ? integration_method::taylor : integration_method::adaptive;
     options.tolerance = parse_real<Real>(q.tolerance, "tolerance");
     options.max_steps = q.max_steps;
-    j["command"] = "cor";
-    jobs::add_cor_json(j, law, gamma, g, options, q.certify);
+    j = render::cor_json(jobs::solve_cor(law, gamma, g, options, q.certify));
   });
   return j;
 }

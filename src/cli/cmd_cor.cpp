@@ -8,6 +8,7 @@
 #include <viscor/core/text_fields.hpp>
 #include <viscor/jobs/cor_job.hpp>
 #include <viscor/jobs/point_batch.hpp>
+#include <viscor/jobs/cor_render.hpp>
 
 
 namespace viscor::cli::cmd_cor {  // named: the subcommands share translation units (unity build)
@@ -56,8 +57,8 @@ struct cor_command {
     q.method = parse_integration_method(method);
     q.tolerance = tolerance, q.max_steps = max_steps, q.digits = digits;
     q.certify = certify, q.prove = prove;
-    const command_output r = run_cor(q);
-    output.emit(r.text, r.object);
+    const cor_result r = run_cor(q);
+    output.emit(render::cor_text(r), render::cor_json(r));
   }
 
   void run_points() const {

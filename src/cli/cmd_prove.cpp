@@ -5,7 +5,8 @@
 
 #if VISCOR_HAS_ARB
 #include <viscor/core/field_names.hpp>
-#include <viscor/jobs/proof_report.hpp>
+#include <viscor/enclose/enclose.hpp>
+#include <viscor/jobs/cor_render.hpp>
 
 #include <algorithm>
 #include <sstream>
@@ -32,7 +33,9 @@ struct prove_command {
     j["precision"] = {{"digits", digits}, {"binary_digits", working_bits(digits)}};
     std::ostringstream text;
     text << "law        " << model.describe() << "\ngamma      " << gamma << "\ng          " << g << "\n";
-    const cor_enclosure proof = add_proof(model, gamma, g, digits, text, j);
+    const cor_enclosure proof = viscor::enclose(model, gamma, g, digits);
+    render::add_proof_json(j, proof);
+    render::write_proof_text(text, proof);
     const proven_impact& p = proof.balls;
     j[field::outcome] = std::string(to_string(p.outcome));
     j[field::steps] = p.steps;

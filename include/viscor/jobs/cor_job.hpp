@@ -1,16 +1,14 @@
-// One impact as every front end reports it: the fields of `viscor cor --json`, of
-// each line of `viscor cor --points` and of the Python module's viscor.cor come from
-// here, so they cannot drift apart. run_cor is the whole job of `viscor cor` for
-// one point: scaled or physical inputs, optionally certified and proven.
+// One impact as a job: run_cor is the whole of `viscor cor` for one point (scaled
+// or physical inputs, optionally certified and proven) and returns a cor_result,
+// numbers in the working type; solve_cor is its scaled core, also used by
+// `viscor cor --points` and Python. Front ends render the result
+// (jobs/cor_render.hpp), so the CLI, its JSON and Python cannot drift apart.
 #pragma once
 
-#include <viscor/core/field_names.hpp>
-#include <viscor/jobs/certify_report.hpp>
-#include <viscor/jobs/command_output.hpp>
-#include <viscor/jobs/json_fields.hpp>
+#include <viscor/jobs/cor_result.hpp>
 #include <viscor/jobs/physical_inputs.hpp>
 #if defined(VISCOR_WITH_ENCLOSE)
-#include <viscor/jobs/proof_report.hpp>
+#include <viscor/enclose/enclose.hpp>
 #endif
 
 #include <viscor/core/contact_law.hpp>
@@ -21,7 +19,6 @@
 
 #include <chrono>
 #include <optional>
-#include <sstream>
 #include <string>
 
 namespace viscor::jobs {
@@ -44,44 +41,6 @@ inline integration_method parse_integration_method(const std::string& text, cons
   throw invalid_parameter(option + " must be 'taylor' or 'adaptive', got '" + text + "'");
 }
 
-/// The result fields of one impact (after law, gamma, g and precision).
-template <class Real>
-void add_result_json(json& j, const impact_result<Real>& r, double seconds) {
-  j[field::method] = std::string(to_string(r.method));
-  j[field::e] = number(r.e);
-  j[field::one_minus_e] = number(r.one_minus_e);
-  j[field::outcome] = std::string(to_string(r.outcome));
-  j[field::contact_time] = number(r.contact_time);
-  j[field::max_compression] = number(r.max_compression);
-  if (r.outcome == impact_outcome::stick) j[field::stop_overlap] = number(r.stop_overlap);
-  j[field::time_of_max_compression] = number(r.time_of_max_compression);
-  j[field::energy_residual] = number(r.energy_residual);
-  j[field::error_estimate] = number(r.error_estimate);
-  j[field::steps] = r.steps;
-  j[field::seconds] = seconds;
-}
-
-/// Solves one impact at scaled (gamma, g) in the working type Real and adds its
-/// fields to `j`: law, gamma, g, precision, the result, and with `certify` the
-/// object "certified" (certify_report.hpp). Returns the result.
-template <class Real>
-impact_result<Real> add_cor_json(json& j, const contact_law& law, const Real& gamma, const Real& g,
-                                 const solve_options<Real>& options, bool certify = false) {
-  const auto start = std::chrono::steady_clock::now();
-  const impact_result<Real> r = solve_impact(law, gamma, g, options);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  j["law"] = law_json(law);
-  j["gamma"] = number(gamma);
-  j["g"] = number(g);
-  j["precision"] = scalar_json<Real>();
-  add_result_json(j, r, seconds);
-  if (certify) {
-    std::ostringstream report;  // the readable report is the command-line tool's; the fields are in j
-    certify_and_report<Real>(law, gamma, g, report, j);
-  }
-  return r;
-}
-
 /// One impact: scaled gamma and g, or the physical inputs (with gamma0), as exact decimal text.
 struct cor_request {
   contact_law law;
@@ -91,7 +50,7 @@ struct cor_request {
   std::string tolerance = "0";          ///< relative tolerance per step (0: the working precision)
   std::size_t max_steps = solve_options<double>{}.max_steps;
   int digits = 15;                      ///< working precision in decimal digits
-  bool certify = false;                 ///< add the certified digits (certify_report.hpp)
+  bool certify = false;                 ///< add the certified digits (viscor::certify)
   bool prove = false;                   ///< add proven enclosures (needs viscor::enclose and scaled exact inputs)
 };
 
@@ -107,45 +66,29 @@ inline void check_provable(const contact_law& law, bool is_physical) {
 #endif
 }
 
-// A scaled contact time in seconds (time_scale T); unknown stays unknown.
-template <class Real>
-std::optional<Real> in_seconds(const std::optional<Real>& contact_time, const Real& time_scale) {
-  if (!contact_time) return std::nullopt;
-  return Real(*contact_time * time_scale);
-}
-
-// The readable summary of one solved impact (after the law and the physical inputs).
-template <class Real>
-void describe_impact(std::ostringstream& text, const impact_result<Real>& r, const Real& gamma, const Real& g,
-                     const std::optional<scaled_parameters<Real>>& scales, double seconds) {
-  text << "gamma      " << number(gamma) << "\n"
-       << "g          " << number(g) << "\n"
-       << "outcome    " << to_string(r.outcome)
-       << (r.outcome == impact_outcome::undecided
-               ? " (rebound or stick cannot be decided at this precision: e = 0 to within the error below)\n"
-               : " (contact ends at zero overlap u = 0)\n")
-       << "e          " << number(r.e) << "\n"
-       << "1 - e      " << number(r.one_minus_e) << "\n"
-       << (r.outcome == impact_outcome::rebound ? "T_f        " : "T_stop     ")
-       << (r.outcome == impact_outcome::undecided ? std::string("unknown") : number(r.contact_time)) << " (scaled)\n";
-  if (scales && r.outcome != impact_outcome::undecided)
-    text << "time       " << number(in_seconds(r.contact_time, scales->time_scale)) << " s (contact)\n";
-  text << "u_max      " << number(r.max_compression) << " at tau = " << number(r.time_of_max_compression) << "\n"
-       << (r.outcome == impact_outcome::stick
-               ? "u_stop     " + number(r.stop_overlap) + " (where u' returns to 0, or the rest position)\n"
-               : std::string())
-       << "error      " << to_decimal_string(r.error_estimate, 3) << " (estimated, absolute, on e)\n"
-       << "energy     " << to_decimal_string(r.energy_residual, 3) << " (residual of identity (6))\n"
-       << "steps      " << r.steps << " (" << to_string(r.method) << ")\n"
-       << "seconds    " << seconds << " s\n"
-       << "digits     " << decimal_digits<Real>() << " (working precision)\n";
-}
-
 }  // namespace detail
+
+/// Solves one impact at scaled (gamma, g) in the working type Real, and with
+/// `certify` certifies it (viscor::certify). `requested_digits`, when given, are the
+/// digits asked for, so the result says when the arithmetic left their type.
+template <class Real>
+cor_result solve_cor(const contact_law& law, const Real& gamma, const Real& g, const solve_options<Real>& options,
+                     bool certify = false, std::optional<int> requested_digits = std::nullopt) {
+  const auto start = std::chrono::steady_clock::now();
+  const impact_result<Real> r = solve_impact(law, gamma, g, options);
+  cor_result out;
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  static_cast<impact_result<working_number>&>(out) = detail::erased(r);
+  out.law = law;
+  out.gamma = working_number::of(gamma), out.g = working_number::of(g);
+  out.precision = precision_used::of<Real>(requested_digits);
+  if (certify) out.certified = detail::erased(viscor::certify<Real>(law, gamma, g));
+  return out;
+}
 
 /// The whole `viscor cor` job for one point: inputs checked, solved at the working
 /// precision, optionally certified and proven.
-inline command_output run_cor(cor_request q) {
+inline cor_result run_cor(cor_request q) {
   const bool is_physical = q.physical.given();
   if (is_physical && (q.gamma || q.g))
     throw invalid_parameter("give either the physical inputs (" + q.physical.given_names() +
@@ -158,29 +101,14 @@ inline command_output run_cor(cor_request q) {
     if (!q.physical.gamma0) throw invalid_parameter("cor: physical mode needs --gamma0 (the damping coefficient, SI)");
   }
   if (q.prove) detail::check_provable(q.law, is_physical);
-  command_output out;
-  with_working_precision(q.digits, [&]<class Real>() {
-    json& j = out.object;
-    j["command"] = "cor";
-    j["law"] = law_json(q.law);
-    std::ostringstream text;
-    text << "law        " << q.law.describe() << "\n";
+  cor_result out = with_working_precision(q.digits, [&]<class Real>() {
     Real gamma_value, g_value;
     std::optional<scaled_parameters<Real>> scales;
+    std::optional<physical_parameters<Real>> bead;
     if (is_physical) {
-      const physical_parameters<Real> p = q.physical.parameters<Real>(q.law);
-      scales = to_scaled(q.law, p);
+      bead = q.physical.parameters<Real>(q.law);
+      scales = to_scaled(q.law, *bead);
       gamma_value = scales->gamma, g_value = scales->g;
-      j["physical"] = q.physical.echo();
-      j["time_scale_s"] = number(scales->time_scale);
-      j["length_scale_m"] = number(scales->length_scale);
-      text << "physical   " << q.physical.echo_text() << "\n";
-      if (q.physical.has_material())  // the bead's mass and stiffness are computed, not typed
-        text << (q.physical.is_pair() ? "pair       m* = " : "bead       m = ") << to_decimal_string(p.m, 10)
-             << " kg, k = " << to_decimal_string(p.k, 10)
-             << (q.physical.is_pair() ? " N/m^(3/2) (the relative motion's reduced mass and stiffness, from the "
-                                        "materials)\n"
-                                      : " N/m^(3/2) (from the material)\n");
     } else {
       gamma_value = parse_real<Real>(*q.gamma, "gamma");
       g_value = q.g ? parse_real<Real>(*q.g, "g") : Real(0);
@@ -189,26 +117,22 @@ inline command_output run_cor(cor_request q) {
     options.method = q.method;
     options.tolerance = parse_real<Real>(q.tolerance, "tolerance");
     options.max_steps = q.max_steps;
-
-    const auto start = std::chrono::steady_clock::now();
-    const impact_result<Real> r = solve_impact(q.law, gamma_value, g_value, options);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-
-    j["gamma"] = number(gamma_value);
-    j["g"] = number(g_value);
-    j["precision"] = scalar_json<Real>(q.digits);
-    add_result_json(j, r, seconds);
+    cor_result r = solve_cor(q.law, gamma_value, g_value, options, q.certify, q.digits);
     if (scales) {
-      j[field::contact_time_s] = number(detail::in_seconds(r.contact_time, scales->time_scale));
-      j[field::max_compression_m] = number(Real(r.max_compression * scales->length_scale));
+      physical_side side;
+      side.inputs = q.physical;
+      side.m = working_number::of(bead->m), side.k = working_number::of(bead->k);
+      side.time_scale = working_number::of(scales->time_scale);
+      side.length_scale = working_number::of(scales->length_scale);
+      if (r.contact_time) side.contact_time_s = working_number::of(Real(*r.contact_time->as<Real>() * scales->time_scale));
+      side.max_compression_m = working_number::of(Real(*r.max_compression.as<Real>() * scales->length_scale));
+      r.physical = std::move(side);
     }
-    detail::describe_impact(text, r, gamma_value, g_value, scales, seconds);
-    if (q.certify) certify_and_report<Real>(q.law, gamma_value, g_value, text, j);
-#if defined(VISCOR_WITH_ENCLOSE)
-    if (q.prove) add_proof(q.law, *q.gamma, q.g ? *q.g : std::string("0"), q.digits, text, j);
-#endif
-    out.text = text.str();
+    return r;
   });
+#if defined(VISCOR_WITH_ENCLOSE)
+  if (q.prove) out.proof = viscor::enclose(q.law, *q.gamma, q.g ? *q.g : std::string("0"), q.digits);
+#endif
   return out;
 }
 

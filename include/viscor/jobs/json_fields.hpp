@@ -12,6 +12,7 @@
 #include <viscor/core/real_io.hpp>
 #include <viscor/core/real_types.hpp>
 #include <viscor/jobs/files.hpp>
+#include <viscor/jobs/precision_used.hpp>
 
 #include <nlohmann/json.hpp>
 
@@ -95,21 +96,24 @@ inline json law_json(const contact_law& law) {
   return j;
 }
 
-/// The precision and the arithmetic of the scalar type in use; given the digits that
-/// were asked for, also the arithmetic they chose when the computation left it
-/// (with_working_precision reruns a double-double solve in float128 or MPFR when a
-/// value leaves double's exponent range).
+/// The precision a computation ran at, as JSON: digits, binary_digits, arithmetic and,
+/// when it left the type its requested digits chose, escalated_from.
+inline json precision_json(const precision_used& p) {
+  json j;
+  j["digits"] = p.digits;
+  j["binary_digits"] = p.binary_digits;
+  j["arithmetic"] = to_string(p.arithmetic);
+  if (p.escalated_from) j["escalated_from"] = to_string(*p.escalated_from);
+  return j;
+}
+
+/// The precision and the arithmetic of the scalar type in use (precision_json); given
+/// the digits that were asked for, also the arithmetic they chose when the
+/// computation left it (with_working_precision reruns a double-double solve in
+/// float128 or MPFR when a value leaves double's exponent range).
 template <class Real>
 json scalar_json(std::optional<int> requested_digits = std::nullopt) {
-  json j;
-  j["digits"] = decimal_digits<Real>();
-  j["binary_digits"] = binary_digits<Real>();
-  j["arithmetic"] = to_string(scalar_kind_of<Real>());
-  if (requested_digits) {
-    const scalar_kind asked = scalar_for_digits(*requested_digits);
-    if (asked != scalar_kind_of<Real>()) j["escalated_from"] = to_string(asked);
-  }
-  return j;
+  return precision_json(precision_used::of<Real>(requested_digits));
 }
 
 }  // namespace viscor::jobs

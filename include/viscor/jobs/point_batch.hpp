@@ -11,6 +11,7 @@
 #include <viscor/jobs/files.hpp>
 #include <viscor/jobs/parallel_for.hpp>
 #include <viscor/jobs/cor_job.hpp>
+#include <viscor/jobs/cor_render.hpp>
 #include <viscor/jobs/table_spec.hpp>
 
 #include <viscor/impact/solve_impact.hpp>
@@ -107,7 +108,7 @@ inline json solve_point(const point_text& p, const point_options& o, bool& refus
       options.tolerance = parse_real<Real>(o.tolerance, "tolerance");
       options.max_steps = o.max_steps;
       const Real gamma = parse_real<Real>(p.gamma, "gamma"), g = parse_real<Real>(p.g, "g");
-      add_cor_json(j, law, gamma, g, options);
+      render::add_cor_fields(j, solve_cor(law, gamma, g, options));
     });
   } catch (const error& e) {
     j["error"] = e.what();
