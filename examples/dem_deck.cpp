@@ -7,6 +7,7 @@
 // complete single-bead drop deck that LAMMPS runs as it is (`lmp -in drop.lmp`).
 #include <viscor/viscor.hpp>
 
+#include <cmath>
 #include <iostream>
 
 int main() {
@@ -36,15 +37,18 @@ int main() {
   if (deck.builtin_e)
     std::cout << "# writing e = 0.8 into LAMMPS's own conversion would give e = " << *deck.builtin_e << "\n";
 
-  // The job: inputs as exact decimal text, the readable summary and the JSON object back.
+  // The job: inputs as exact decimal text, a typed result back (jobs/dem_job.hpp);
+  // dem_render.hpp makes the CLI's text of it.
   viscor::jobs::dem_request q;
   q.code = "lammps", q.damping = "tsuji";
   q.youngs_modulus = "70e9", q.poisson_ratio = "0.22", q.radius = "1e-3", q.density = "2500";
   q.target_e = "0.8", q.v0 = "0.5", q.gravity = "9.81";
   q.drop_deck_path = "drop.lmp";
-  const viscor::jobs::command_output job = viscor::jobs::run_dem(q);
-  std::cout << job.text;
-  const bool same = job.object["deck"]["damping"] == entries.damping;  // one calibration, two ways to call it
-  if (!same) std::cerr << "the job's damping " << job.object["deck"]["damping"] << " differs from " << entries.damping << "\n";
-  return same && deck.damping > 0 && timing.time_step > 0 ? 0 : 1;
+  const viscor::jobs::dem_result job = viscor::jobs::run_dem(q);
+  std::cout << viscor::render::dem_text(job);
+  const viscor::jobs::dem_forward& forward = *job.forward;
+  const bool same = forward.deck.damping == entries.damping;  // one calibration, two ways to call it
+  if (!same) std::cerr << "the job's damping " << forward.deck.damping << " differs from " << entries.damping << "\n";
+  const bool calibrated = std::abs(forward.e - target_e) <= forward.target_bound;  // e at the deck, as a number
+  return same && calibrated && deck.damping > 0 && timing.time_step > 0 ? 0 : 1;
 }

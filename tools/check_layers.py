@@ -3,7 +3,9 @@
 
 Every header under include/viscor/<folder>/ may include only headers of its own
 folder and of the folders ALLOWED lists for it; nothing but the umbrella and
-generated headers may sit directly in include/viscor/. The command-line front end
+generated headers may sit directly in include/viscor/. A job's typed API (JOB_API: the
+one-shot jobs and jobs/*_result.hpp) never mentions JSON or a text-and-JSON output (JOB_API_FORBIDDEN).
+The command-line front end
 (src/cli/) holds option parsing and printing only: no threads, signal handling or
 file reading and writing of its own (FRONT_END_FORBIDDEN). The Python module
 (python/) binds the library's jobs: it includes no header of src/cli/ and calls
@@ -61,6 +63,11 @@ FORBIDDEN_PAIRS = [
     ("ode/lobatto_integrator.hpp", "ode/radau_integrator.hpp"),
     ("ode/radau_integrator.hpp", "ode/lobatto_integrator.hpp"),
 ]
+# The jobs' typed API: a request in, a result of numbers and types out. Text and JSON
+# are made by the render headers (jobs/*_render.hpp), so these never mention them.
+# (The formula, scene, table, report and error-map jobs still write JSON themselves.)
+JOB_API = re.compile(r"^jobs/((cor|exact|approx|scale|calibrate|dem|speaks_json)_job|\w+_result|precision_used)\.hpp$")
+JOB_API_FORBIDDEN = re.compile(r"\bjson\b|command_output|nlohmann")
 TOP_LEVEL_OK = {"viscor.hpp", "config.hpp.in"}
 INCLUDE = re.compile(r'^\s*#\s*include\s*[<"]viscor/([^>"]+)[>"]', re.M)
 
@@ -86,6 +93,12 @@ def main() -> int:
                 continue
             if tfolder != folder and tfolder not in ALLOWED[folder]:
                 problems.append(f"{rel} includes viscor/{target}: '{folder}' may not depend on '{tfolder}'")
+        if JOB_API.match(rel):
+            for number, line in enumerate(path.read_text().splitlines(), 1):
+                found = JOB_API_FORBIDDEN.search(line)
+                if found and not line.lstrip().startswith("//"):
+                    problems.append(f"{rel}:{number}: '{found.group(0)}' in a job's typed API: results are numbers "
+                                    "and types, rendered in jobs/*_render.hpp")
         for a, b in FORBIDDEN_PAIRS:
             if rel == a and f"viscor/{b}" in path.read_text():
                 problems.append(f"{rel} includes viscor/{b}: the two are independent methods")

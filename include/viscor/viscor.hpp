@@ -82,7 +82,12 @@
 #include <viscor/jobs/surrogate_export.hpp>
 #include <viscor/jobs/surrogate_files.hpp>
 #include <viscor/jobs/table_jobs.hpp>
+#include <viscor/jobs/approx_render.hpp>
+#include <viscor/jobs/calibrate_render.hpp>
 #include <viscor/jobs/cor_render.hpp>
+#include <viscor/jobs/dem_render.hpp>
+#include <viscor/jobs/exact_render.hpp>
+#include <viscor/jobs/scale_render.hpp>
 #endif
 
 /// @namespace viscor

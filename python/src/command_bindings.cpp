@@ -7,14 +7,19 @@
 #include "python_objects.hpp"
 
 #include <viscor/jobs/approx_job.hpp>
+#include <viscor/jobs/approx_render.hpp>
 #include <viscor/jobs/calibrate_job.hpp>
+#include <viscor/jobs/calibrate_render.hpp>
 #include <viscor/jobs/cor_job.hpp>
 #include <viscor/jobs/cor_render.hpp>
 #include <viscor/jobs/dem_job.hpp>
+#include <viscor/jobs/dem_render.hpp>
 #include <viscor/jobs/exact_job.hpp>
+#include <viscor/jobs/exact_render.hpp>
 #include <viscor/jobs/formula_job.hpp>
 #include <viscor/jobs/physical_inputs.hpp>
 #include <viscor/jobs/scale_job.hpp>
+#include <viscor/jobs/scale_render.hpp>
 #include <viscor/jobs/table_jobs.hpp>
 
 #include <viscor/core/scaling.hpp>
@@ -65,17 +70,14 @@ std::optional<std::string> optional_text(const std::string& text) {
   return text.empty() ? std::nullopt : std::optional<std::string>(text);
 }
 
-// A job's JSON object: a rendered one as it is, a command_output's object.
-const jobs::json& object_of(const jobs::json& j) { return j; }
-const jobs::json& object_of(const jobs::command_output& out) { return out.object; }
-
-// Runs a job without the GIL and returns its JSON object as Python objects.
+// Runs a job and renders its result to JSON without the GIL, and returns the JSON
+// object as Python objects.
 template <class Job>
 py::object run_released(const Job& job) {
   jobs::json object;
   {
     py::gil_scoped_release release;
-    object = object_of(job());
+    object = job();
   }
   return to_python(object);
 }
@@ -85,7 +87,7 @@ py::object exact(const std::string& name, const std::string& alpha, const std::s
   jobs::exact_request q;
   q.law = jobs::resolve_law(name, alpha, beta);
   q.gamma = gamma, q.g = g, q.digits = digits;
-  return run_released([&] { return jobs::run_exact(q); });
+  return run_released([&] { return render::exact_json(jobs::run_exact(q)); });
 }
 
 py::object approx(const std::string& name, const std::string& alpha, const std::string& beta, const std::string& gamma,
@@ -93,7 +95,7 @@ py::object approx(const std::string& name, const std::string& alpha, const std::
   jobs::approx_request q;
   q.law = jobs::resolve_law(name, alpha, beta);
   q.gamma = gamma, q.g = g, q.formula = formula, q.source = source, q.order = order, q.digits = digits;
-  return run_released([&] { return jobs::run_approx(q); });
+  return run_released([&] { return render::approx_json(jobs::run_approx(q)); });
 }
 
 py::object scale(const std::string& name, const std::string& alpha, const std::string& beta,
@@ -102,7 +104,7 @@ py::object scale(const std::string& name, const std::string& alpha, const std::s
   q.law = jobs::resolve_law(name, alpha, beta);
   q.physical = physical_of(physical, strict);
   q.gamma = optional_text(gamma), q.g = optional_text(g), q.digits = digits;
-  return run_released([&] { return jobs::run_scale(q); });
+  return run_released([&] { return render::scale_json(jobs::run_scale(q)); });
 }
 
 py::object calibrate(const std::string& name, const std::string& alpha, const std::string& beta,
@@ -114,7 +116,7 @@ py::object calibrate(const std::string& name, const std::string& alpha, const st
   q.physical = physical_of(physical, strict);
   q.target_e = optional_text(target_e), q.g = optional_text(g);
   q.tolerance = tolerance, q.gamma_max = gamma_max, q.method = method, q.digits = digits;
-  return run_released([&] { return jobs::run_calibrate(q); });
+  return run_released([&] { return render::calibrate_json(jobs::run_calibrate(q)); });
 }
 
 py::object dem(const text_fields& fields, int digits, bool strict) {
@@ -138,7 +140,7 @@ py::object dem(const text_fields& fields, int digits, bool strict) {
     *slot->second = value;
   }
   q.digits = digits, q.strict = strict;
-  return run_released([&] { return jobs::run_dem(q); });
+  return run_released([&] { return render::dem_json(jobs::run_dem(q)); });
 }
 
 // One impact from its physical inputs (the physical mode of `viscor cor`).

@@ -3,6 +3,7 @@
 #include "command_registry.hpp"
 
 #include <viscor/jobs/approx_job.hpp>
+#include <viscor/jobs/approx_render.hpp>
 
 namespace viscor::cli::cmd_approx {  // named: the subcommands share translation units (unity build)
 namespace {
@@ -14,8 +15,8 @@ struct approx_command {
 
   void run() {
     request.law = law.resolve();
-    const command_output r = run_approx(request);
-    output.emit(r.text, r.object);
+    const approx_result r = run_approx(request);
+    output.emit(render::approx_text(r), render::approx_json(r));
   }
 };
 

@@ -5,6 +5,7 @@
 #include "physical_options.hpp"
 
 #include <viscor/jobs/calibrate_job.hpp>
+#include <viscor/jobs/calibrate_render.hpp>
 
 namespace viscor::cli::cmd_calibrate {  // named: the subcommands share translation units (unity build)
 namespace {
@@ -18,8 +19,8 @@ struct calibrate_command {
   void run() {
     request.law = law.resolve();
     request.physical = physical;
-    const command_output r = run_calibrate(request);
-    output.emit(r.text, r.object);
+    const calibrate_result r = run_calibrate(request);
+    output.emit(render::calibrate_text(r), render::calibrate_json(r));
   }
 };
 

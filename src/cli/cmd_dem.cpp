@@ -5,6 +5,7 @@
 #include "physical_options.hpp"
 
 #include <viscor/jobs/dem_job.hpp>
+#include <viscor/jobs/dem_render.hpp>
 
 namespace viscor::cli::cmd_dem {  // named: the subcommands share translation units (unity build)
 namespace {
@@ -14,8 +15,8 @@ struct dem_command {
   dem_request request;
 
   void run() const {
-    const command_output r = run_dem(request);
-    output.emit(r.text, r.object);
+    const dem_result r = run_dem(request);
+    output.emit(render::dem_text(r), render::dem_json(r));
   }
 };
 

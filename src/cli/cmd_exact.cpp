@@ -3,6 +3,7 @@
 #include "command_registry.hpp"
 
 #include <viscor/jobs/exact_job.hpp>
+#include <viscor/jobs/exact_render.hpp>
 
 namespace viscor::cli::cmd_exact {  // named: the subcommands share translation units (unity build)
 namespace {
@@ -14,8 +15,8 @@ struct exact_command {
 
   void run() {
     request.law = law.resolve();
-    const command_output r = run_exact(request);
-    output.emit(r.text, r.object);
+    const exact_job_result r = run_exact(request);
+    output.emit(render::exact_text(r), render::exact_json(r));
   }
 };
 

@@ -4,6 +4,7 @@
 #include "physical_options.hpp"
 
 #include <viscor/jobs/scale_job.hpp>
+#include <viscor/jobs/scale_render.hpp>
 
 namespace viscor::cli::cmd_scale {  // named: the subcommands share translation units (unity build)
 namespace {
@@ -17,8 +18,8 @@ struct scale_command {
   void run() {
     request.law = law.resolve();
     request.physical = physical;
-    const command_output r = run_scale(request);
-    output.emit(r.text, r.object);
+    const scale_result r = run_scale(request);
+    output.emit(render::scale_text(r), render::scale_json(r));
   }
 };
 

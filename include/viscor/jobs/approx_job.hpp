@@ -4,11 +4,11 @@
 // (89), (90), each with its coefficients I(g), Q(g) from the closed forms at g = 0,
 // tanh-sinh quadrature, or the Chebyshev-Beta approximation; or the committed
 // surrogate in double (never silently outside its domain or for a law without one).
+// Rendered by jobs/approx_render.hpp.
 #pragma once
 
-#include <viscor/core/field_names.hpp>
-#include <viscor/jobs/command_output.hpp>
-#include <viscor/jobs/json_fields.hpp>
+#include <viscor/core/working_number.hpp>
+#include <viscor/jobs/precision_used.hpp>
 #include <viscor/jobs/surrogate_files.hpp>
 
 #include <viscor/approx/approximations.hpp>
@@ -17,7 +17,7 @@
 #include <viscor/core/real_io.hpp>
 
 #include <array>
-#include <iomanip>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -35,6 +35,42 @@ struct approx_request {
   int order = 21;               ///< odd order of the Chebyshev-Beta approximation, 1 to 999
 };
 
+/// Proposition 2 with one source of its coefficients I(g), Q(g).
+struct prop2_value {
+  coefficient_source source = coefficient_source::exact_at_zero;
+  working_number I, Q, e_squared;
+  std::optional<working_number> theta;         ///< chebyshev_beta: the Beta argument theta(g)
+  std::optional<working_number> e;             ///< (36) min(e_+, e_s), when asked for
+  std::optional<working_number> e_plus;        ///< (89), when asked for
+  std::optional<working_number> e_linearized;  ///< (90), when asked for
+};
+
+/// What `viscor approx` found: the report's formulas in the working type, or the
+/// committed surrogate's value in double (`by_surrogate`).
+struct approx_result {
+  contact_law law;
+  std::string gamma_text, g_text;  ///< the inputs as given
+  bool by_surrogate = false;
+  // --formula surrogate:
+  working_number e, one_minus_e;
+  impact_outcome outcome = impact_outcome::rebound;
+  surrogate::surrogate_bound bound;
+  // the formulas:
+  working_number gamma, g;
+  precision_used precision;
+  int chebyshev_order = 0;
+  /// The closed forms at g = 0 behind the formulas (closed_form_coefficients: eqs. 19, 22, 23, 39, 40).
+  struct closed_forms {
+    working_number I0, Q0, dI_dg0, C0, C1, C, p, C2;
+  } closed;
+  std::optional<working_number> critical_g;      ///< gamma > 0: the sticking threshold g_c(gamma) (24)
+  std::optional<working_number> critical_gamma;  ///< g > 0: the damping that sticks at this g
+  std::optional<working_number> small_g, large_g, schwager_poschel;  ///< those asked for and applicable
+  bool prop2_asked = false;
+  std::vector<prop2_value> prop2;           ///< per coefficient source, in order
+  std::vector<std::string> not_applicable;  ///< why a formula of "all" was left out
+};
+
 namespace detail {
 
 constexpr std::array<const char*, 8> formula_names{"all",   "small_g",       "large_g",         "schwager_poschel",
@@ -45,7 +81,7 @@ struct approx_job : approx_request {
 
   // --formula surrogate: the committed surrogate in double (docs/surrogate.md); never silently
   // outside its domain or for a law without one.
-  command_output run_surrogate(const contact_law& model) const {
+  approx_result run_surrogate(const contact_law& model) const {
     const surrogate::cor_surrogate* s = find_surrogate(model);
     if (!s)
       throw invalid_parameter("no surrogate for " + model.describe() + " (looked in '" + surrogate_directory() +
@@ -58,28 +94,16 @@ struct approx_job : approx_request {
       throw invalid_parameter("gamma = " + gamma + ", g = " + g + " is outside the domain of the " + model.name +
                               " surrogate (" + domain.str() + ")");
     }
-    json j;
-    j["command"] = "approx";
-    j["formula"] = "surrogate";
-    j["law"] = law_json(model);
-    j["gamma"] = gamma, j["g"] = g;
-    j[field::e] = number(v.e);
-    j[field::one_minus_e] = number(v.one_minus_e);
-    j[field::outcome] = std::string(to_string(v.outcome));
-    j["error_bound"] = surrogate_bound_json(*s);
-    std::ostringstream text;
-    text << "law          " << model.describe() << "\n"
-         << "surrogate    e = " << number(v.e) << ", 1 - e = " << number(v.one_minus_e) << " (" << to_string(v.outcome)
-         << ")\n"
-         << (s->bound.verified() ? "" : "error bound  none: this surrogate file was never verified\n");
-    if (s->bound.verified())
-      text << "error bound  |de| <= " << s->bound.abs_e << " (e >= 1e-2), |de^2| <= " << s->bound.abs_e_squared
-         << ", relative d(1 - e) <= " << s->bound.rel_one_minus_e << " (gamma <= 1e-2)\n"
-         << "             (measured maximum over the certified verification points x " << s->bound.safety_factor << ")\n";
-    return {text.str(), j};
+    approx_result out;
+    out.law = model;
+    out.gamma_text = gamma, out.g_text = g;
+    out.by_surrogate = true;
+    out.e = v.e, out.one_minus_e = v.one_minus_e, out.outcome = v.outcome;
+    out.bound = s->bound;
+    return out;
   }
 
-  command_output run() const {
+  approx_result run() const {
     const contact_law& model = law;
     if (gamma.empty()) throw invalid_parameter("approx needs --gamma");
     if (formula == "surrogate") return run_surrogate(model);
@@ -94,118 +118,67 @@ struct approx_job : approx_request {
     } else {
       sources.push_back(parse_coefficient_source(source));
     }
-    command_output out;
-    with_working_precision(digits, [&]<class Real>() {
+    return with_working_precision(digits, [&]<class Real>() {
+      const auto of = [](const Real& x) { return working_number::of(x); };
       const Real gamma_value = parse_real<Real>(gamma, "gamma");
       const Real g_value = parse_real<Real>(g, "g");
       const cor_approximations<Real> approx(model, order);
       const auto& c = approx.closed_forms();
 
-      json j;
-      j["command"] = "approx";
-      j["law"] = law_json(model);
-      j["gamma"] = number(gamma_value);
-      j["g"] = number(g_value);
-      j["precision"] = scalar_json<Real>(digits);
-      j["chebyshev_order"] = order;
-      json closed;
-      closed["I0"] = number(c.I0), closed["Q0"] = number(c.Q0), closed["dI_dg0"] = number(c.dI_dg0);
-      closed["C0"] = number(c.C0), closed["C1"] = number(c.C1), closed["C"] = number(c.C);
-      closed["p"] = number(c.p), closed["C2"] = number(c.C2);
-      if (gamma_value > 0) closed["critical_g"] = number(critical_g(c.alpha, c.beta, gamma_value));
-      if (g_value > 0) closed["critical_gamma"] = number(critical_gamma(c.alpha, c.beta, g_value));
-      j["closed_forms"] = closed;
-
-      std::ostringstream text;
-      text << "law        " << model.describe() << "\n"
-           << "gamma      " << number(gamma_value) << "\n"
-           << "g          " << number(g_value) << "\n"
-           << "C0 = " << to_decimal_string(c.C0, 10) << ", C1 = " << to_decimal_string(c.C1, 10)
-           << ", C = " << to_decimal_string(c.C, 10) << ", C2(g=0) = " << to_decimal_string(c.C2, 10) << "\n";
-      if (gamma_value > 0)
-        text << "g_c(gamma) = " << to_decimal_string(critical_g(c.alpha, c.beta, gamma_value), 10) << " (eq. 24)\n";
-      text << "\n" << std::left << std::setw(34) << "formula" << std::setw(16) << "coefficients" << "e\n";
-      auto row = [&](const std::string& name, const std::string& from, const std::string& value) {
-        text << std::left << std::setw(34) << name << std::setw(16) << from << value << "\n";
-      };
-      std::vector<std::string> skipped;
+      approx_result out;
+      out.law = model;
+      out.gamma_text = gamma, out.g_text = g;
+      out.gamma = of(gamma_value), out.g = of(g_value);
+      out.precision = precision_used::of<Real>(digits);
+      out.chebyshev_order = order;
+      out.closed.I0 = of(c.I0), out.closed.Q0 = of(c.Q0), out.closed.dI_dg0 = of(c.dI_dg0);
+      out.closed.C0 = of(c.C0), out.closed.C1 = of(c.C1), out.closed.C = of(c.C);
+      out.closed.p = of(c.p), out.closed.C2 = of(c.C2);
+      if (gamma_value > 0) out.critical_g = of(critical_g(c.alpha, c.beta, gamma_value));
+      if (g_value > 0) out.critical_gamma = of(critical_gamma(c.alpha, c.beta, g_value));
       const bool all = formula == "all";
 
-      if (wants("small_g")) {
-        const Real e = approx.small_g(gamma_value, g_value);
-        j["small_g"] = number(e);
-        row("small_g (22)", "closed form", number(e));
-      }
+      if (wants("small_g")) out.small_g = of(approx.small_g(gamma_value, g_value));
       if (wants("large_g")) {
-        if (all && g_value < 0) {
-          skipped.push_back("large_g (23) needs g >= 0");
-        } else {
-          const Real e = approx.large_g(gamma_value, g_value);
-          j["large_g"] = number(e);
-          row("large_g (23)", "closed form", number(e));
-        }
+        if (all && g_value < 0) out.not_applicable.push_back("large_g (23) needs g >= 0");
+        else out.large_g = of(approx.large_g(gamma_value, g_value));
       }
       if (wants("schwager_poschel")) {
-        if (all && !approx.is_kuwabara_kono()) {
-          skipped.push_back("schwager_poschel (25)+(30) exists for Kuwabara-Kono only");
-        } else {
-          const Real e = approx.schwager_poschel(gamma_value, g_value);
-          j["schwager_poschel"] = number(e);
-          row("schwager_poschel (25)+(30)", "closed form", number(e));
-        }
+        if (all && !approx.is_kuwabara_kono())
+          out.not_applicable.push_back("schwager_poschel (25)+(30) exists for Kuwabara-Kono only");
+        else out.schwager_poschel = of(approx.schwager_poschel(gamma_value, g_value));
       }
-      const bool any_prop2 = wants("prop2") || wants("prop2_squared") || wants("prop2_linearized");
-      if (any_prop2) {
-        json prop2;
+      out.prop2_asked = wants("prop2") || wants("prop2_squared") || wants("prop2_linearized");
+      if (out.prop2_asked) {
         for (const coefficient_source s : sources) {
-          const std::string from(to_string(s));
           if (source == "all" && s == coefficient_source::exact_at_zero && g_value != 0) {
-            skipped.push_back("prop2 with exact_at_zero coefficients needs g = 0");
+            out.not_applicable.push_back("prop2 with exact_at_zero coefficients needs g = 0");
             continue;
           }
           if (source == "all" && s == coefficient_source::chebyshev_beta && g_value < 0) {
-            skipped.push_back("prop2 with chebyshev_beta coefficients needs g >= 0");
+            out.not_applicable.push_back("prop2 with chebyshev_beta coefficients needs g >= 0");
             continue;
           }
           const prop2_result<Real> r = approx.prop2(gamma_value, g_value, s);
-          json one;
-          one["I"] = number(r.I), one["Q"] = number(r.Q);
-          if (s == coefficient_source::chebyshev_beta) one["theta"] = number(theta_of_g(c.alpha, g_value));
-          one["e_squared"] = number(r.e_squared);
-          if (wants("prop2")) {
-            one[field::e] = number(r.e);
-            row("prop2 (36) min(e_+, e_s)", from, number(r.e));
-          }
-          if (wants("prop2_squared")) {
-            one["e_plus"] = number(r.e_plus);
-            row("prop2_squared (89) e_+", from, number(r.e_plus));
-          }
-          if (wants("prop2_linearized")) {
-            one["e_linearized"] = number(r.e_linearized);
-            row("prop2_linearized (90) e_s", from, number(r.e_linearized));
-          }
-          prop2[from] = one;
+          prop2_value one;
+          one.source = s;
+          one.I = of(r.I), one.Q = of(r.Q), one.e_squared = of(r.e_squared);
+          if (s == coefficient_source::chebyshev_beta) one.theta = of(theta_of_g(c.alpha, g_value));
+          if (wants("prop2")) one.e = of(r.e);
+          if (wants("prop2_squared")) one.e_plus = of(r.e_plus);
+          if (wants("prop2_linearized")) one.e_linearized = of(r.e_linearized);
+          out.prop2.push_back(std::move(one));
         }
-        j["prop2"] = prop2;
       }
-      if (!skipped.empty()) {
-        json s = json::array();
-        text << "\nnot applicable:\n";
-        for (const auto& why : skipped) s.push_back(why), text << "  " << why << "\n";
-        j["not_applicable"] = s;
-      }
-      text << "\nApproximations of the CoR at zero overlap (u = 0); compare with 'viscor cor'.\n"
-           << "digits   " << decimal_digits<Real>() << " (working precision; the formulas' own error is far larger)\n";
-      out = {text.str(), j};
+      return out;
     });
-    return out;
   }
 };
 
 }  // namespace detail
 
 /// The requested formulas at (gamma, g).
-inline command_output run_approx(const approx_request& q) {
+inline approx_result run_approx(const approx_request& q) {
   if (q.order < 1 || q.order > 999) throw invalid_parameter("order must be from 1 to 999, got " + std::to_string(q.order));
   return detail::approx_job{q}.run();
 }

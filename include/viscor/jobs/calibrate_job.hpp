@@ -5,12 +5,12 @@
 //   method "surrogate": the inverse of the law's committed surrogate in double
 //   (cor_surrogate::gamma_for): about a microsecond; refused for a law without a
 //   surrogate, a load outside its domain, or a target outside 0.01 <= e < 1.
+// Rendered by jobs/calibrate_render.hpp.
 #pragma once
 
-#include <viscor/core/field_names.hpp>
-#include <viscor/jobs/command_output.hpp>
-#include <viscor/jobs/json_fields.hpp>
+#include <viscor/core/working_number.hpp>
 #include <viscor/jobs/physical_inputs.hpp>
+#include <viscor/jobs/precision_used.hpp>
 #include <viscor/jobs/surrogate_files.hpp>
 
 #include <viscor/core/contact_law.hpp>
@@ -21,7 +21,6 @@
 
 #include <chrono>
 #include <optional>
-#include <sstream>
 #include <string>
 
 namespace viscor::jobs {
@@ -37,10 +36,29 @@ struct calibrate_request {
   std::string method = "solve";   ///< "solve" or "surrogate"
 };
 
+/// What `viscor calibrate` found, in the working type (double for the surrogate).
+struct calibrate_result {
+  contact_law law;
+  std::string target_e;  ///< as given
+  bool by_surrogate = false;  ///< method "surrogate" (else "solve")
+  std::optional<physical_inputs> physical;  ///< the inputs as given, in the physical mode
+  /// The physical mode: the damping coefficient (SI) that gives the target and the time scale (s).
+  std::optional<working_number> gamma0, time_scale;
+  /// The physical mode, method solve: the bead and load the inputs give (kg, N/m^alpha, m/s, m/s^2, N).
+  working_number m, k, v0, gravity, force;
+  working_number gamma, g, e;  ///< the calibrated scaled damping, the scaled load and e there
+  /// Method solve: |e - target| bound (miss plus 10 x the solver's estimate), the final bracket, the solves.
+  working_number target_bound, gamma_lo, gamma_hi;
+  std::size_t solves = 0;
+  surrogate::surrogate_bound bound;  ///< method surrogate: the surrogate's stated bound
+  precision_used precision;
+  double seconds = 0;
+};
+
 namespace detail {
 
 // gamma (and gamma0) from the committed surrogate's inverse, in double.
-inline command_output calibrate_by_surrogate(const calibrate_request& q, bool is_physical) {
+inline calibrate_result calibrate_by_surrogate(const calibrate_request& q, bool is_physical) {
   const surrogate::cor_surrogate* s = find_surrogate(q.law);
   if (!s || !s->bound.verified())
     throw invalid_parameter("--method surrogate: no surrogate for " + q.law.describe() + " (looked in '" +
@@ -49,71 +67,49 @@ inline command_output calibrate_by_surrogate(const calibrate_request& q, bool is
   if (!(target >= 0.01 && target < 1))
     throw invalid_parameter("--method surrogate: --target-e must be in [0.01, 1), got " + *q.target_e);
   double g_value = 0, factor = 0, time_scale_s = 0;
-  command_output out;
-  json& j = out.object;
-  j["command"] = "calibrate";
-  j[field::method] = "surrogate";
-  j["law"] = law_json(q.law);
-  j[field::target_e] = *q.target_e;
   if (is_physical) {
     const physical_parameters<double> in = q.physical.parameters<double>(q.law);
     physical_parameters<double> p = in;
     p.gamma0 = 1;  // gamma / gamma0 is the damping factor of the scaling
     const scaled_parameters<double> scaled = to_scaled(q.law, p);
     g_value = scaled.g, factor = scaled.gamma, time_scale_s = scaled.time_scale;
-    j["physical"] = q.physical.echo();
   } else {
     g_value = q.g ? parse_real<double>(*q.g, "g") : 0.0;
   }
   if (!(g_value >= s->g_min && g_value <= s->g_max))
-    throw invalid_parameter("--method surrogate: g = " + number(g_value) + " is outside the surrogate's domain (" +
-                            number(s->g_min) + " <= g <= " + number(s->g_max) + ")");
+    throw invalid_parameter("--method surrogate: g = " + to_decimal_string(g_value) + " is outside the surrogate's domain (" +
+                            to_decimal_string(s->g_min) + " <= g <= " + to_decimal_string(s->g_max) + ")");
   const auto start = std::chrono::steady_clock::now();
   const double gamma = s->gamma_for(target, g_value);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!(gamma == gamma))
-    throw invalid_parameter("--method surrogate: no gamma in [0, " + number(s->gamma_max) + "] gives e = " +
-                            *q.target_e + " at g = " + number(g_value) + " (the surrogate's domain)");
-  const surrogate::surrogate_value v = (*s)(gamma, g_value);
-  j["gamma"] = number(gamma);
-  j["g"] = number(g_value);
-  j[field::e] = number(v.e);
-  j["error_bound"] = surrogate_bound_json(*s);
-  j["precision"] = scalar_json<double>();
-  j[field::seconds] = seconds;
-  std::ostringstream text;
-  text << "law        " << q.law.describe() << "\n"
-       << "target e   " << *q.target_e << "\n";
+    throw invalid_parameter("--method surrogate: no gamma in [0, " + to_decimal_string(s->gamma_max) + "] gives e = " +
+                            *q.target_e + " at g = " + to_decimal_string(g_value) + " (the surrogate's domain)");
+  calibrate_result out;
+  out.law = q.law;
+  out.target_e = *q.target_e;
+  out.by_surrogate = true;
   if (is_physical) {
-    j["gamma0"] = number(gamma / factor);
-    j["time_scale_s"] = number(time_scale_s);
-    text << "gamma0     " << number(gamma / factor) << "\n";
+    out.physical = q.physical;
+    out.gamma0 = gamma / factor, out.time_scale = time_scale_s;
   }
-  text << "gamma      " << number(gamma) << " (scaled; the surrogate's inverse)\n"
-       << "g          " << number(g_value) << " (scaled load)\n"
-       << "e          " << number(v.e) << " at gamma (surrogate)\n"
-       << "bound      |de| <= " << number(s->bound.abs_e) << " where e >= 1e-2 (measured maximum x "
-       << number(s->bound.safety_factor) << ", docs/surrogate.md)\n"
-       << "seconds    " << seconds << " s\n";
-  out.text = text.str();
+  out.gamma = gamma, out.g = g_value, out.e = (*s)(gamma, g_value).e;
+  out.bound = s->bound;
+  out.precision = precision_used::of<double>();
+  out.seconds = seconds;
   return out;
 }
 
 // Root finding on solve_impact at the working precision.
-inline command_output calibrate_by_solving(const calibrate_request& q, bool is_physical) {
-  command_output out;
-  with_working_precision(q.digits, [&]<class Real>() {
+inline calibrate_result calibrate_by_solving(const calibrate_request& q, bool is_physical) {
+  return with_working_precision(q.digits, [&]<class Real>() {
     calibration_options<Real> options;
     options.tolerance = parse_real<Real>(q.tolerance, "tolerance");
     options.gamma_max = parse_real<Real>(q.gamma_max, "gamma_max");
     const Real target = parse_real<Real>(*q.target_e, "target_e");
-    json& j = out.object;
-    j["command"] = "calibrate";
-    j["law"] = law_json(q.law);
-    j[field::target_e] = *q.target_e;
-    std::ostringstream text;
-    text << "law        " << q.law.describe() << "\n"
-         << "target e   " << *q.target_e << "\n";
+    calibrate_result out;
+    out.law = q.law;
+    out.target_e = *q.target_e;
     const auto start = std::chrono::steady_clock::now();
     calibration_result<Real> r;
     if (is_physical) {
@@ -121,41 +117,27 @@ inline command_output calibrate_by_solving(const calibrate_request& q, bool is_p
       const physical_calibration<Real> p =
           calibrate_gamma0(q.law, in.m, in.k, in.v0, in.gravity, in.force, target, options);
       r = p.scaled;
-      j["physical"] = q.physical.echo();
-      j["gamma0"] = number(p.gamma0);
-      j["time_scale_s"] = number(p.time_scale);
-      text << "bead       m = " << number(in.m) << " kg, k = " << number(in.k) << ", v0 = " << number(in.v0)
-           << " m/s, gravity = " << number(in.gravity) << " m/s^2, force = " << number(in.force) << " N\n"
-           << "gamma0     " << number(p.gamma0) << "\n";
+      out.physical = q.physical;
+      out.gamma0 = working_number::of(p.gamma0), out.time_scale = working_number::of(p.time_scale);
+      out.m = working_number::of(in.m), out.k = working_number::of(in.k), out.v0 = working_number::of(in.v0);
+      out.gravity = working_number::of(in.gravity), out.force = working_number::of(in.force);
     } else {
       r = calibrate_gamma(q.law, q.g ? parse_real<Real>(*q.g, "g") : Real(0), target, options);
     }
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    j["gamma"] = number(r.gamma);
-    j["g"] = number(r.g);
-    j[field::e] = number(r.e);
-    j[field::target_bound] = number(r.target_bound);
-    j[field::gamma_lo] = number(r.gamma_lo);
-    j[field::gamma_hi] = number(r.gamma_hi);
-    j[field::solves] = r.solves;
-    j["precision"] = scalar_json<Real>(q.digits);
-    j[field::seconds] = seconds;
-    text << "gamma      " << number(r.gamma) << " (scaled)\n"
-         << "g          " << number(r.g) << " (scaled load)\n"
-         << "e          " << number(r.e) << " at gamma (solve_impact)\n"
-         << "|e - tgt|  <= " << to_decimal_string(r.target_bound, 3) << " (miss plus 10 x the solver's estimate)\n"
-         << "solves     " << r.solves << "\n"
-         << "seconds    " << seconds << " s\n"
-         << "digits     " << decimal_digits<Real>() << " (working precision)\n";
-    out.text = text.str();
+    out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    out.gamma = working_number::of(r.gamma), out.g = working_number::of(r.g), out.e = working_number::of(r.e);
+    out.target_bound = working_number::of(r.target_bound);
+    out.gamma_lo = working_number::of(r.gamma_lo), out.gamma_hi = working_number::of(r.gamma_hi);
+    out.solves = r.solves;
+    out.precision = precision_used::of<Real>(q.digits);
+    return out;
   });
-  return out;
 }
 
 }  // namespace detail
 
 /// The calibrated damping by the requested method.
-inline command_output run_calibrate(calibrate_request q) {
+inline calibrate_result run_calibrate(calibrate_request q) {
   if (!q.target_e) throw invalid_parameter("calibrate needs --target-e, the CoR to reproduce");
   const bool is_physical = q.physical.given();
   if (is_physical && q.g)

@@ -3,13 +3,13 @@
 // force law, mapped through the code's own conventions, include/viscor/dem/), and
 // the reverse: the e a deck damping entry produces. As `viscor dem` and viscor.dem
 // report it; the forward job can also write a complete single-bead drop deck.
+// Rendered by jobs/dem_render.hpp.
 #pragma once
 
-#include <viscor/core/field_names.hpp>
-#include <viscor/jobs/command_output.hpp>
+#include <viscor/core/working_number.hpp>
 #include <viscor/jobs/files.hpp>
-#include <viscor/jobs/json_fields.hpp>
 #include <viscor/jobs/physical_inputs.hpp>
+#include <viscor/jobs/precision_used.hpp>
 #include <viscor/jobs/unit_checks.hpp>
 
 #include <viscor/core/precision.hpp>
@@ -22,7 +22,6 @@
 #include <chrono>
 #include <filesystem>
 #include <optional>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -49,6 +48,68 @@ struct dem_request {
   std::string variables_path;    ///< forward, LAMMPS/LIGGGHTS: also write the entries as a `variable` block here
   int digits = 15;               ///< working precision in decimal digits
   bool strict = false;           ///< refuse, not only warn about, implausible inputs
+
+  /// The wall's and the other bead's inputs, under their field names.
+  std::vector<std::pair<std::string, const std::string*>> partner_inputs() const {
+    return {{"wall_youngs_modulus", &wall_youngs_modulus}, {"wall_poisson_ratio", &wall_poisson_ratio},
+            {"other_youngs_modulus", &other_youngs_modulus}, {"other_poisson_ratio", &other_poisson_ratio},
+            {"other_radius", &other_radius}, {"other_density", &other_density}};
+  }
+};
+
+/// The contact the code integrates, from the bead and its partner.
+struct dem_contact_values {
+  std::optional<working_number> effective_modulus;  ///< E*, Pa (Hertz contacts; not a linear spring)
+  working_number effective_radius, effective_mass;  ///< R* (m), m* (kg)
+  working_number stiffness;                         ///< k: N/m^1.5 (Hertz) or N/m (linear spring)
+};
+
+/// What the code's own e-to-damping conversion would give for the target.
+struct dem_builtin {
+  working_number e;              ///< the e the code's conversion gives
+  working_number error;          ///< e - target
+  working_number error_percent;  ///< of 1 - target
+  std::optional<working_number> tc;  ///< YADE visco-elastic: the tc that gives its kn = k, s
+  std::string conversion;        ///< what the code is given instead ("" for LAMMPS and LIGGGHTS)
+};
+
+/// Forward: the deck entries for a target e, the calibration behind them and the time step.
+struct dem_forward {
+  std::string target_e;    ///< as given
+  dem::deck_strings deck;  ///< the entries as written into the input (shortest doubles)
+  working_number damping_number, gamma0, gamma, g, e, target_bound, time_scale;
+  std::optional<dem_builtin> builtin;
+  std::string snippet;  ///< the input lines, ready to paste
+  working_number contact_time, time_step;  ///< s: how long the contact lasts, the recommended step
+  working_number timing_time_scale;        ///< s: the drop's time scale T (time_step = T / steps_per_time_scale)
+  long steps_per_time_scale = 0, steps_per_contact = 0;
+  std::string drop_deck_path, variables_path;  ///< the files written ("" when not asked for)
+};
+
+/// Reverse: the e a deck entry gives, per impact speed and load.
+struct dem_reverse_row {
+  std::string v0, gravity, force;  ///< as given
+  working_number e;
+  impact_outcome outcome = impact_outcome::rebound;
+};
+struct dem_reverse {
+  std::string deck_en;       ///< YADE's en, when given instead of the damping
+  std::string deck_damping;  ///< the deck's damping entry (converted from en when en was given)
+  working_number damping_number;
+  std::vector<dem_reverse_row> rows;
+};
+
+/// What `viscor dem` found: the code's model, the contact it integrates, and the
+/// forward deck or the reverse table.
+struct dem_result {
+  dem::dem_model model;
+  dem::contact_kind kind = dem::contact_kind::wall;
+  dem_request inputs;  ///< as given (echoed by the front ends)
+  dem_contact_values contact;
+  std::optional<dem_forward> forward;
+  std::optional<dem_reverse> reverse;
+  precision_used precision;
+  double seconds = 0;
 };
 
 namespace detail {
@@ -56,30 +117,6 @@ namespace detail {
 struct dem_job : dem_request {
   void require(const std::string& value, const char* option, const char* what) const {
     if (value.empty()) throw invalid_parameter(std::string("dem needs ") + option + " (" + what + ")");
-  }
-
-  // The inputs echoed under `physical`, with the names of their options, as given.
-  json physical_echo(bool linear) const {
-    json p;
-    if (linear)
-      p["k"] = stiffness;
-    else
-      p["youngs_modulus"] = youngs_modulus, p["poisson_ratio"] = poisson_ratio;
-    p["radius"] = radius;
-    p["density"] = density;
-    for (const auto& [name, value] : partner_inputs())
-      if (!value->empty()) p[name] = *value;
-    if (!v0.empty()) p["v0"] = v0;
-    p["gravity"] = gravity;
-    p["force"] = force;
-    return p;
-  }
-
-  /// The wall's and the other bead's inputs, under their field names.
-  std::vector<std::pair<std::string, const std::string*>> partner_inputs() const {
-    return {{"wall_youngs_modulus", &wall_youngs_modulus}, {"wall_poisson_ratio", &wall_poisson_ratio},
-            {"other_youngs_modulus", &other_youngs_modulus}, {"other_poisson_ratio", &other_poisson_ratio},
-            {"other_radius", &other_radius}, {"other_density", &other_density}};
   }
 
   /// The wall's material or the other bead, checked for completeness against the contact.
@@ -115,17 +152,6 @@ struct dem_job : dem_request {
     return p;
   }
 
-  /// The readable line for the wall or the other bead, as given.
-  std::string partner_line(dem::contact_kind kind) const {
-    if (kind == dem::contact_kind::wall)
-      return wall_youngs_modulus.empty() ? "wall        rigid\n"
-                                         : "wall        youngs_modulus = " + wall_youngs_modulus +
-                                               " Pa, poisson_ratio = " + wall_poisson_ratio + "\n";
-    if (other_youngs_modulus.empty()) return "other bead  like the first\n";
-    return "other bead  youngs_modulus = " + other_youngs_modulus + " Pa, poisson_ratio = " + other_poisson_ratio +
-           ", radius = " + other_radius + " m, density = " + other_density + " kg/m^3\n";
-  }
-
   /// A negative gravity is refused; values far outside their range are warned about (refused under --strict).
   void check_units() const {
     require_gravity_towards_wall(std::optional<std::string>(gravity));
@@ -141,8 +167,7 @@ struct dem_job : dem_request {
     check_plausible_unit(physical_quantity::radius, given(other_radius), "--other-radius", strict);
   }
 
-  command_output run() const {
-    command_output out;
+  dem_result run() const {
     require(code, "CODE", "lammps, liggghts or yade");
     require(damping, "--damping", "the code's damping model");
     const dem::dem_model& model = dem::find_dem_model(code, damping);
@@ -189,7 +214,7 @@ struct dem_job : dem_request {
       require(target_e, "--target-e", "the measured coefficient of restitution, 0 < e < 1");
       require(v0, "--v0", "impact speed, m/s");
     }
-    with_working_precision(digits, [&]<class Real>() {
+    return with_working_precision(digits, [&]<class Real>() {
       dem::dem_impact<Real> impact;
       impact.bead.radius = parse_real<Real>(radius, "radius");
       impact.bead.density = parse_real<Real>(density, "density");
@@ -205,125 +230,55 @@ struct dem_job : dem_request {
       impact.gravity = parse_real<Real>(gravity, "gravity");
       impact.force = parse_real<Real>(force, "force");
       const auto start = std::chrono::steady_clock::now();
-      json j;
-      j["command"] = "dem";
-      j["code"] = code;
-      j["damping_model"] = damping;
-      j["contact"] = contact;
-      j["law"] = law_json(dem::law_of(model));
-      j["clamped"] = model.clamped;  // the code sets a pulling normal force to zero
-      j["version"] = std::string(model.version);
-      j["code_source"] = std::string(model.source);
-      j["physical"] = physical_echo(linear);  // as given, named as the options (docs/json-schema.md)
+      dem_result out;
+      out.model = model;
+      out.kind = kind;
+      out.inputs = *this;
       const dem::hertz_contact<Real> c = dem::model_contact(model, impact);
-      if (!linear) j["effective_modulus_pa"] = number(c.effective_modulus);
-      j["effective_radius_m"] = number(c.effective_radius);
-      j["effective_mass_kg"] = number(c.effective_mass);
-      j["k"] = number(c.stiffness);
-      std::ostringstream text;
-      text << "code        " << model.version << "\n"
-           << "model       " << code << " damping " << damping << " on a " << contact << " (viscor law "
-           << model.law_name << ")\n";
-      text << partner_line(kind);
-      if (linear)
-        text << "contact     linear spring k = " << number(c.stiffness) << " N/m, m* = " << number(c.effective_mass)
-             << " kg\n";
-      else
-        text << "contact     E* = " << number(c.effective_modulus) << " Pa, R* = " << number(c.effective_radius)
-             << " m, m* = " << number(c.effective_mass) << " kg, k = " << number(c.stiffness) << " N/m^1.5\n";
+      if (!linear) out.contact.effective_modulus = working_number::of(c.effective_modulus);
+      out.contact.effective_radius = working_number::of(c.effective_radius);
+      out.contact.effective_mass = working_number::of(c.effective_mass);
+      out.contact.stiffness = working_number::of(c.stiffness);
       if (reverse)
-        run_reverse<Real>(model, impact, j, text);
+        out.reverse = run_reverse<Real>(model, impact);
       else
-        run_forward<Real>(model, impact, j, text);
-      j["precision"] = scalar_json<Real>(digits);
-      j[field::seconds] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      out = {text.str(), j};
+        out.forward = run_forward<Real>(model, impact);
+      out.precision = precision_used::of<Real>(digits);
+      out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      return out;
     });
-    return out;
   }
 
   template <class Real>
-  void run_forward(const dem::dem_model& model, dem::dem_impact<Real>& impact, json& j, std::ostringstream& text) const {
+  dem_forward run_forward(const dem::dem_model& model, dem::dem_impact<Real>& impact) const {
+    const auto of = [](const Real& x) { return working_number::of(x); };
     impact.v0 = parse_real<Real>(v0, "v0");
     const Real target = parse_real<Real>(target_e, "target_e");
     calibration_options<Real> options;
     const dem::dem_deck<Real> d = dem::dem_deck_for(model, impact, target, options);
-    const dem::deck_strings s = deck_strings_for(model, impact, d, target);
-    json deck;
-    if (d.stiffness) {  // YADE visco-elastic: the bead material's kn, cn; a rigid wall material
-      deck["kn"] = s.stiffness;
-      deck["cn"] = s.damping;
-      if (s.wall_youngs_modulus) deck["wall_kn"] = deck["wall_cn"] = *s.wall_youngs_modulus;
-    } else {
-      deck["youngs_modulus"] = s.youngs_modulus;
-      deck["poisson_ratio"] = s.poisson_ratio;
-      const std::pair<const char*, const std::optional<std::string>*> optional_entries[] = {
-          {"wall_youngs_modulus", &s.wall_youngs_modulus}, {"wall_poisson_ratio", &s.wall_poisson_ratio},
-          {"other_youngs_modulus", &s.other_youngs_modulus}, {"other_poisson_ratio", &s.other_poisson_ratio},
-          {"cross_youngs_modulus", &s.cross_youngs_modulus}, {"bead_bead_youngs_modulus", &s.bead_bead_youngs_modulus},
-          {"bead_bead_damping", &s.bead_bead_damping}, {"other_other_damping", &s.other_other_damping}};
-      for (const auto& [name, value] : optional_entries)
-        if (*value) deck[name] = **value;
-    }
-    deck["damping"] = s.damping;
-    deck["damping_kind"] = model.deck_kind == dem::deck_damping_kind::coefficient ? "coefficient"
-                                                                                   : "coefficient_of_restitution";
-    j[field::target_e] = target_e;
-    j["deck"] = deck;
-    j["damping_number"] = number(d.damping_number);
-    j["gamma0"] = number(d.gamma0);
-    j["gamma"] = number(d.calibration.scaled.gamma);
-    j["g"] = number(d.calibration.scaled.g);
-    j[field::e] = number(d.calibration.scaled.e);
-    j[field::target_bound] = number(d.calibration.scaled.target_bound);
-    j["time_scale_s"] = number(d.calibration.time_scale);
-    text << "impact      e = " << target_e << " at v0 = " << v0 << " m/s, gravity = " << gravity
-         << " m/s^2, force = " << force << " N\n"
-         << "viscor      gamma0 = " << number(d.gamma0) << " (scaled gamma = " << number(d.calibration.scaled.gamma)
-         << ", g = " << number(d.calibration.scaled.g) << "), e = " << number(d.calibration.scaled.e) << "\n"
-         << "deck        ";
-    if (d.stiffness) {
-      text << "bead material kn = " << s.stiffness << " N/m, cn = " << s.damping << " N s/m\n";
-      if (s.wall_youngs_modulus) text << "            wall material kn = cn = " << *s.wall_youngs_modulus << " (rigid)\n";
-    } else {
-      text << "youngs_modulus = " << s.youngs_modulus << ", poisson_ratio = " << s.poisson_ratio
-           << ", damping = " << s.damping << "\n";
-      if (s.wall_youngs_modulus)
-        text << "            wall " << (model.code == dem::dem_code::yade ? "material young" : "type youngs_modulus")
-             << " = " << *s.wall_youngs_modulus
-             << (s.wall_material ? ", poisson_ratio = " + *s.wall_poisson_ratio + "\n" : std::string(" (rigid)\n"));
-      if (s.other_youngs_modulus)
-        text << "            other bead youngs_modulus = " << *s.other_youngs_modulus << ", poisson_ratio = "
-             << *s.other_poisson_ratio << "\n";
-      if (s.cross_youngs_modulus)
-        text << "            cross entry (1,2) youngs_modulus = " << *s.cross_youngs_modulus
-             << " (LAMMPS does not mix hertz/material right)\n";
-      if (s.bead_bead_damping)
-        text << "            bead-bead (two like beads, same e and v0, no load): youngs_modulus = "
-             << s.bead_bead_youngs_modulus.value_or(s.youngs_modulus) << ", damping = " << *s.bead_bead_damping << "\n";
-      if (s.other_other_damping)
-        text << "            other-other (two like beads, same e and v0, no load): damping = " << *s.other_other_damping
-             << "\n";
-    }
+    dem_forward out;
+    out.target_e = target_e;
+    out.deck = deck_strings_for(model, impact, d, target);
+    out.damping_number = of(d.damping_number);
+    out.gamma0 = of(d.gamma0);
+    out.gamma = of(d.calibration.scaled.gamma), out.g = of(d.calibration.scaled.g);
+    out.e = of(d.calibration.scaled.e), out.target_bound = of(d.calibration.scaled.target_bound);
+    out.time_scale = of(d.calibration.time_scale);
     if (d.builtin_e) {
-      const Real miss = *d.builtin_e - target;
-      j["builtin_e"] = number(*d.builtin_e);
-      j["builtin_error"] = number(miss);
-      j["builtin_error_percent_of_one_minus_e"] = number(dem::percent_of_one_minus_e(*d.builtin_e, target));
-      const bool yade = model.code == dem::dem_code::yade;
+      dem_builtin b;
+      b.e = of(*d.builtin_e);
+      b.error = of(Real(*d.builtin_e - target));
+      b.error_percent = of(dem::percent_of_one_minus_e(*d.builtin_e, target));
       if (model.damping == dem::damping_model::mindlin)
-        j["builtin_conversion"] = "Ip2_FrictMat_FrictMat_MindlinPhys(en=target_e) instead of betan (Thornton et al. 2013 fit)";
+        b.conversion = "Ip2_FrictMat_FrictMat_MindlinPhys(en=target_e) instead of betan (Thornton et al. 2013 fit)";
       if (d.builtin_tc) {
-        j["builtin_tc_s"] = number(*d.builtin_tc);
-        j["builtin_conversion"] = "ViscElMat(tc=builtin_tc_s, en=target_e, et=target_e) for bead and wall instead of kn, "
-                                  "cn: YADE's kn is then k, its cn comes from the reduced mass m/2";
-        text << "builtin     tc = " << to_decimal_string(*d.builtin_tc, 10) << " s gives YADE's kn = k\n";
+        b.tc = of(*d.builtin_tc);
+        b.conversion = "ViscElMat(tc=builtin_tc_s, en=target_e, et=target_e) for bead and wall instead of kn, "
+                       "cn: YADE's kn is then k, its cn comes from the reduced mass m/2";
       }
-      text << "builtin     writing " << (yade ? "en = " : "e = ") << target_e << " into the " << (yade ? "input" : "deck") << " gives e = " << to_decimal_string(*d.builtin_e, 10)
-           << " (" << to_decimal_string(miss, 3) << ", " << to_decimal_string(dem::percent_of_one_minus_e(*d.builtin_e, target), 3)
-           << " % of 1 - e)\n";
+      out.builtin = std::move(b);
     }
-    std::string snippet = dem::deck_snippet(model, impact.kind, s);
+    std::string snippet = dem::deck_snippet(model, impact.kind, out.deck);
     if (model.code == dem::dem_code::yade)  // the YADE script names the beads' sizes, densities, speed and the load
       for (const auto& [name, value] : {std::pair<std::string, std::string>{"OTHER_DENSITY", other_density},
                                         {"OTHER_RADIUS", other_radius}, {"DENSITY", density}, {"RADIUS", radius},
@@ -333,27 +288,17 @@ struct dem_job : dem_request {
     const dem::drop_timing<Real> timing = dem::drop_timing_for(model, impact, d);
     snippet += dem::snippet_time_step_line(model, to_decimal_string(timing.time_step, 6),
                                            to_decimal_string(timing.contact_time, 6), timing.steps_per_time_scale);
-    j["snippet"] = snippet;
-    j[field::contact_time_s] = number(timing.contact_time);
-    j["time_step_s"] = number(timing.time_step);
-    text << "time step   the contact lasts " << to_decimal_string(timing.contact_time, 6) << " s; dt = T/"
-         << timing.steps_per_time_scale << " = " << to_decimal_string(timing.time_step, 6) << " s (T = "
-         << to_decimal_string(timing.time_scale, 6) << " s, about "
-         << static_cast<long>(static_cast<double>(timing.contact_time / timing.time_step)) << " steps per contact)\n";
-    text << "snippet\n" << snippet;
-    write_deck_files(drop_deck_path.empty() ? std::string() : dem::drop_deck(model, s, drop_inputs(impact, timing)),
+    out.snippet = snippet;
+    out.contact_time = of(timing.contact_time), out.time_step = of(timing.time_step);
+    out.timing_time_scale = of(timing.time_scale);
+    out.steps_per_time_scale = timing.steps_per_time_scale;
+    out.steps_per_contact = static_cast<long>(static_cast<double>(timing.contact_time / timing.time_step));
+    write_deck_files(drop_deck_path.empty() ? std::string() : dem::drop_deck(model, out.deck, drop_inputs(impact, timing)),
                      variables_path.empty() ? std::string()
-                                            : variable_block(model, impact.kind, s, drop_inputs(impact, timing),
+                                            : variable_block(model, impact.kind, out.deck, drop_inputs(impact, timing),
                                                              to_decimal_string(timing.contact_time)));
-    if (!drop_deck_path.empty()) {
-      j["drop_deck"] = drop_deck_path;
-      text << "drop deck   wrote " << drop_deck_path << " (run: " << drop_run_command(model) << ")\n";
-    }
-    if (!variables_path.empty()) {
-      j["variables"] = variables_path;
-      text << "variables   wrote " << variables_path << " (in the deck: include " << variables_path
-           << ", then ${viscor_...}; units si)\n";
-    }
+    out.drop_deck_path = drop_deck_path, out.variables_path = variables_path;
+    return out;
   }
 
   /// The first line of every variable block viscor writes (--variables replaces only such a file).
@@ -487,26 +432,16 @@ struct dem_job : dem_request {
     return in;
   }
 
-  std::string drop_run_command(const dem::dem_model& model) const {
-    switch (model.code) {
-      case dem::dem_code::lammps: return "lmp -in " + drop_deck_path;
-      case dem::dem_code::liggghts: return "liggghts -in " + drop_deck_path;
-      case dem::dem_code::yade: return "yade -n -x " + drop_deck_path;
-    }
-    return {};
-  }
-
-
   template <class Real>
-  void run_reverse(const dem::dem_model& model, dem::dem_impact<Real>& impact, json& j, std::ostringstream& text) const {
+  dem_reverse run_reverse(const dem::dem_model& model, dem::dem_impact<Real>& impact) const {
+    dem_reverse out;
     Real deck_value;
     if (!deck_en.empty()) {  // YADE's own conversion: `en` becomes betan by Thornton's fit
       const Real en = parse_real<Real>(deck_en, "deck_en");
       if (!(en > 0 && en <= 1))
         throw invalid_parameter("parameter deck_en must be in (0, 1], got " + to_decimal_string(en));
       deck_value = dem::yade_thornton_betan(en);
-      j["deck_en"] = deck_en;
-      j["builtin_conversion"] = "Ip2_FrictMat_FrictMat_MindlinPhys(en=deck_en): betan by Thornton et al. (2013)";
+      out.deck_en = deck_en;
     } else {
       deck_value = parse_real<Real>(deck_damping, "deck_damping");
     }
@@ -517,14 +452,8 @@ struct dem_job : dem_request {
     struct load { std::string gravity, force; };
     std::vector<load> loads{{"0", "0"}};
     if (impact.gravity != 0 || impact.force != 0) loads.push_back({gravity, force});
-    j["deck_damping"] = deck_en.empty() ? deck_damping : to_decimal_string(deck_value);
-    j["damping_number"] = number(dem::damping_number(model, deck_value));
-    json rows = json::array();
-    if (!deck_en.empty()) text << "deck        en = " << deck_en << " (YADE's own conversion)\n";
-    text << "deck        damping = " << (deck_en.empty() ? deck_damping : to_decimal_string(deck_value))
-         << (dem::takes_linear_stiffness(model) ? " (the bead material's cn, N s/m; its kn as viscor dem writes it)\n"
-                                                : " (the deck modulus as viscor dem writes it)\n")
-         << "v0 (m/s)    gravity (m/s^2)  force (N)  e\n";
+    out.deck_damping = deck_en.empty() ? deck_damping : to_decimal_string(deck_value);
+    out.damping_number = working_number::of(dem::damping_number(model, deck_value));
     for (const std::string& speed : speed_list) {
       for (const load& l : loads) {
         dem::dem_impact<Real> at = impact;
@@ -533,23 +462,16 @@ struct dem_job : dem_request {
         at.force = parse_real<Real>(l.force, "force");
         require_positive(at.v0, "v0");
         const impact_result<Real> r = dem::e_for_deck(model, at, deck_value);
-        json row;
-        row["v0"] = speed, row["gravity"] = l.gravity, row["force"] = l.force;
-        row[field::e] = number(r.e);
-        row[field::outcome] = to_string(r.outcome);
-        rows.push_back(row);
-        text << speed << std::string(speed.size() < 12 ? 12 - speed.size() : 1, ' ') << l.gravity
-             << std::string(l.gravity.size() < 17 ? 17 - l.gravity.size() : 1, ' ') << l.force
-             << std::string(l.force.size() < 11 ? 11 - l.force.size() : 1, ' ') << to_decimal_string(r.e, 12) << "\n";
+        out.rows.push_back({speed, l.gravity, l.force, working_number::of(r.e), r.outcome});
       }
     }
-    j["table"] = rows;
+    return out;
   }
 };
 
 }  // namespace detail
 
 /// The deck entries for a target e, or the e of a deck entry at the listed speeds.
-inline command_output run_dem(const dem_request& q) { return detail::dem_job{q}.run(); }
+inline dem_result run_dem(const dem_request& q) { return detail::dem_job{q}.run(); }
 
 }  // namespace viscor::jobs

@@ -1,10 +1,10 @@
 // The closed-form CoR where one exists (gamma = 0; the linear law; beta = alpha + 1
-// at g = 0; Tsuji at g = 0), as `viscor exact` and viscor.exact report it.
+// at g = 0; Tsuji at g = 0), as `viscor exact` and viscor.exact report it
+// (rendered by jobs/exact_render.hpp).
 #pragma once
 
-#include <viscor/core/field_names.hpp>
-#include <viscor/jobs/command_output.hpp>
-#include <viscor/jobs/json_fields.hpp>
+#include <viscor/core/working_number.hpp>
+#include <viscor/jobs/precision_used.hpp>
 
 #include <viscor/core/contact_law.hpp>
 #include <viscor/core/precision.hpp>
@@ -13,7 +13,6 @@
 
 #include <chrono>
 #include <optional>
-#include <sstream>
 #include <string>
 
 namespace viscor::jobs {
@@ -25,49 +24,49 @@ struct exact_request {
   int digits = 15;  ///< working precision in decimal digits
 };
 
-/// The closed form at (gamma, g), or `"exists": false` when none is known.
-inline command_output run_exact(const exact_request& q) {
-  command_output out;
-  with_working_precision(q.digits, [&]<class Real>() {
+/// What `viscor exact` found: the closed form in the working type, or none.
+struct exact_job_result {
+  contact_law law;
+  std::string gamma_text, g_text;  ///< the inputs as given
+  working_number gamma, g;         ///< as read in the working type
+  precision_used precision;
+  std::optional<exact_result<working_number>> exact;  ///< empty: no closed form is known here
+  double seconds = 0;
+};
+
+namespace detail {
+template <class Real>
+exact_result<working_number> erased(const exact_result<Real>& r) {
+  const auto optional_of = [](const std::optional<Real>& x) {
+    return x ? std::optional<working_number>(working_number::of(*x)) : std::nullopt;
+  };
+  exact_result<working_number> out;
+  out.e = working_number::of(r.e), out.one_minus_e = working_number::of(r.one_minus_e);
+  out.outcome = r.outcome;
+  out.contact_time = optional_of(r.contact_time);
+  out.max_compression = optional_of(r.max_compression);
+  out.time_of_max_compression = optional_of(r.time_of_max_compression);
+  out.formula = r.formula;
+  return out;
+}
+}  // namespace detail
+
+/// The closed form at (gamma, g), or an empty `exact` when none is known.
+inline exact_job_result run_exact(const exact_request& q) {
+  return with_working_precision(q.digits, [&]<class Real>() {
     const Real gamma_value = parse_real<Real>(q.gamma, "gamma");
     const Real g_value = parse_real<Real>(q.g, "g");
     const auto start = std::chrono::steady_clock::now();
     const std::optional<exact_result<Real>> r = exact_cor(q.law, gamma_value, g_value);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-
-    json& j = out.object;
-    j["command"] = "exact";
-    j["law"] = law_json(q.law);
-    j["gamma"] = number(gamma_value), j["g"] = number(g_value);
-    j["precision"] = scalar_json<Real>(q.digits);
-    j["exists"] = r.has_value();
-    std::ostringstream text;
-    text << "law      " << q.law.describe() << "\ngamma    " << q.gamma << "\ng        " << q.g << "\n";
-    if (!r) {
-      text << "no exact solution is known for these parameters (exact: gamma = 0; alpha = beta = 1;\n"
-              "beta = alpha + 1 with g = 0; alpha = 3/2, beta = 5/4 with g = 0). Use 'viscor cor'.\n";
-      out.text = text.str();
-      return;
-    }
-    j["formula"] = r->formula;
-    j[field::e] = number(r->e);
-    j[field::one_minus_e] = number(r->one_minus_e);
-    j[field::outcome] = std::string(to_string(r->outcome));
-    if (r->contact_time) j[field::contact_time] = number(*r->contact_time);
-    if (r->max_compression) j[field::max_compression] = number(*r->max_compression);
-    if (r->time_of_max_compression) j[field::time_of_max_compression] = number(*r->time_of_max_compression);
-    j[field::seconds] = seconds;
-    text << "formula  " << r->formula << "\n"
-         << "outcome  " << to_string(r->outcome) << " (contact ends at zero overlap u = 0)\n"
-         << "e        " << number(r->e) << "\n"
-         << "1 - e    " << number(r->one_minus_e) << "\n";
-    if (r->contact_time) text << "T_f      " << number(*r->contact_time) << "\n";
-    if (r->max_compression) text << "u_max    " << number(*r->max_compression) << "\n";
-    text << "digits   " << decimal_digits<Real>() << " (working precision)\n"
-         << "seconds  " << seconds << " s\n";
-    out.text = text.str();
+    exact_job_result out;
+    out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    out.law = q.law;
+    out.gamma_text = q.gamma, out.g_text = q.g;
+    out.gamma = working_number::of(gamma_value), out.g = working_number::of(g_value);
+    out.precision = precision_used::of<Real>(q.digits);
+    if (r) out.exact = detail::erased(*r);
+    return out;
   });
-  return out;
 }
 
 }  // namespace viscor::jobs

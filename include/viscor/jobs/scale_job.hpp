@@ -1,11 +1,12 @@
 // Physical parameters <-> scaled (gamma, g) by the report's scaling (core/scaling.hpp),
 // as `viscor scale` and viscor.scale report it: forward from gamma0 (physical ->
-// scaled), or inverse from gamma and g (scaled -> gamma0 and the force).
+// scaled), or inverse from gamma and g (scaled -> gamma0 and the force); rendered by
+// jobs/scale_render.hpp.
 #pragma once
 
-#include <viscor/jobs/command_output.hpp>
-#include <viscor/jobs/json_fields.hpp>
+#include <viscor/core/working_number.hpp>
 #include <viscor/jobs/physical_inputs.hpp>
+#include <viscor/jobs/precision_used.hpp>
 
 #include <viscor/core/contact_law.hpp>
 #include <viscor/core/precision.hpp>
@@ -13,7 +14,6 @@
 #include <viscor/core/scaling.hpp>
 
 #include <optional>
-#include <sstream>
 #include <string>
 
 namespace viscor::jobs {
@@ -26,51 +26,46 @@ struct scale_request {
   int digits = 15;                      ///< working precision in decimal digits
 };
 
+/// What `viscor scale` found, in the working type.
+struct scale_result {
+  contact_law law;
+  physical_inputs physical;  ///< the inputs as given
+  precision_used precision;
+  bool scaled_to_physical = false;  ///< the inverse direction (gamma, g given)
+  working_number gamma, g;          ///< given (inverse) or computed (forward)
+  working_number gamma0, force;     ///< inverse: the damping coefficient (SI) and the force (N) that give gamma, g
+  working_number time_scale, length_scale;  ///< forward: s and m per scaled unit
+};
+
 /// The conversion in the direction the inputs ask for.
-inline command_output run_scale(scale_request q) {
+inline scale_result run_scale(scale_request q) {
   const bool inverse = q.gamma || q.g;
   if (inverse && (!q.gamma || !q.g)) throw invalid_parameter("scaled -> physical needs both --gamma and --g");
   if (inverse && q.physical.gamma0)
     throw invalid_parameter("give either --gamma0 (physical -> scaled) or --gamma/--g (scaled -> physical)");
   if (inverse && q.physical.force) throw invalid_parameter("scaled -> physical computes --force from --g; do not give it");
   q.physical.check("scale");
-  command_output out;
-  with_working_precision(q.digits, [&]<class Real>() {
-    json& j = out.object;
-    j["command"] = "scale";
-    j["law"] = law_json(q.law);
-    j["physical"] = q.physical.echo();
-    j["precision"] = scalar_json<Real>(q.digits);
-    std::ostringstream text;
-    text << "law      " << q.law.describe() << "\n";
+  return with_working_precision(q.digits, [&]<class Real>() {
+    scale_result out;
+    out.law = q.law;
+    out.physical = q.physical;
+    out.precision = precision_used::of<Real>(q.digits);
+    out.scaled_to_physical = inverse;
     if (inverse) {
       const auto [mass, stiffness] = q.physical.bead<Real>(q.law);
       const Real speed = parse_real<Real>(*q.physical.v0, "v0");
       const Real grav = q.physical.acting_gravity<Real>();
       const Real gamma_value = parse_real<Real>(*q.gamma, "gamma"), g_value = parse_real<Real>(*q.g, "g");
       const physical_parameters<Real> p = to_physical(q.law, gamma_value, g_value, mass, stiffness, speed, grav);
-      j["physical"].erase("force");
-      j["direction"] = "scaled_to_physical";
-      j["gamma"] = number(gamma_value);
-      j["g"] = number(g_value);
-      j["gamma0"] = number(p.gamma0);
-      j["force"] = number(p.force);
-      text << "gamma0   " << number(p.gamma0) << "\nforce    " << number(p.force) << " N\n";
+      out.gamma = working_number::of(gamma_value), out.g = working_number::of(g_value);
+      out.gamma0 = working_number::of(p.gamma0), out.force = working_number::of(p.force);
     } else {
-      const physical_parameters<Real> p = q.physical.parameters<Real>(q.law);
-      const scaled_parameters<Real> s = to_scaled(q.law, p);
-      j["direction"] = "physical_to_scaled";
-      j["gamma"] = number(s.gamma);
-      j["g"] = number(s.g);
-      j["time_scale_s"] = number(s.time_scale);
-      j["length_scale_m"] = number(s.length_scale);
-      text << "gamma    " << number(s.gamma) << "\ng        " << number(s.g) << "\n"
-           << "T        " << number(s.time_scale) << " s (time scale)\n"
-           << "delta    " << number(s.length_scale) << " m (overlap scale)\n";
+      const scaled_parameters<Real> sc = to_scaled(q.law, q.physical.parameters<Real>(q.law));
+      out.gamma = working_number::of(sc.gamma), out.g = working_number::of(sc.g);
+      out.time_scale = working_number::of(sc.time_scale), out.length_scale = working_number::of(sc.length_scale);
     }
-    out.text = text.str();
+    return out;
   });
-  return out;
 }
 
 }  // namespace viscor::jobs

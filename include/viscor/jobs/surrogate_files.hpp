@@ -70,16 +70,17 @@ inline const surrogate::cor_surrogate* find_surrogate(const contact_law& law) {
 }
 
 /// error_bound of a surrogate value: what is claimed and what the claim is.
-inline json surrogate_bound_json(const surrogate::cor_surrogate& s) {
-  if (!s.bound.verified()) return {{"kind", "none: this surrogate file was never verified (no bound is claimed)"}};
+inline json surrogate_bound_json(const surrogate::surrogate_bound& b) {
+  if (!b.verified()) return {{"kind", "none: this surrogate file was never verified (no bound is claimed)"}};
   return {{"kind", "measured maximum over the certified verification points x safety factor"},
-          {"safety_factor", s.bound.safety_factor},
-          {"abs_e", s.bound.abs_e},
+          {"safety_factor", b.safety_factor},
+          {"abs_e", b.abs_e},
           {"abs_e_applies", "where e >= 1e-2"},
-          {"abs_e_squared", s.bound.abs_e_squared},
-          {"rel_one_minus_e", s.bound.rel_one_minus_e},
+          {"abs_e_squared", b.abs_e_squared},
+          {"rel_one_minus_e", b.rel_one_minus_e},
           {"rel_one_minus_e_applies", "where gamma <= 1e-2 and e >= 1e-2"},
           {"outcome", "correct except within relative 1e-10 in g of the sticking threshold"}};
 }
+inline json surrogate_bound_json(const surrogate::cor_surrogate& s) { return surrogate_bound_json(s.bound); }
 
 }  // namespace viscor::jobs
