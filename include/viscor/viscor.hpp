@@ -42,11 +42,13 @@
 #include <viscor/core/plausible_units.hpp>
 #include <viscor/dem/builtin_conversions.hpp>
 #include <viscor/dem/deck_convention.hpp>
+#include <viscor/dem/deck_entries.hpp>
 #include <viscor/dem/deck_snippet.hpp>
 #include <viscor/dem/drop_deck.hpp>
 #include <viscor/dem/dem_calibration.hpp>
 #include <viscor/dem/dem_model.hpp>
 #include <viscor/dem/hertz_contact.hpp>
+#include <viscor/dem/variable_block.hpp>
 #include <viscor/surrogate/chebyshev.hpp>
 #include <viscor/surrogate/cor_surrogate.hpp>
 #include <viscor/surrogate/surrogate_fit.hpp>

@@ -167,8 +167,13 @@ using double_array = py::array_t<double, py::array::c_style | py::array::forceca
 py::tuple scaled_arrays(const std::string& name, const std::string& alpha, const std::string& beta,
                         const std::map<std::string, double_array>& columns, const std::string& contact, bool strict) {
   const contact_law law = jobs::resolve_law(name, alpha, beta);
-  if (contact != "wall" && contact != "pair")
-    throw invalid_parameter("evaluate: contact must be 'wall' or 'pair', got '" + contact + "'");
+  {  // which inputs are given, by the library's rules (physical_inputs::check_complete); values come below
+    text_fields names{{"contact", contact}};
+    for (const auto& [key, values] : columns) names[key] = "1";
+    const jobs::physical_inputs given = physical_of(names, strict);
+    given.check_complete("evaluate");
+    given.require_gamma0("evaluate");
+  }
   const dem::contact_kind kind = contact == "pair" ? dem::contact_kind::pair : dem::contact_kind::wall;
   const auto column = [&](const char* key) -> const double* {
     const auto it = columns.find(key);

@@ -37,28 +37,8 @@ def _scaled_from_physical(name, a, b, tol, physical, strict):
     contact = physical.pop("contact", "wall")
     if not isinstance(contact, str):
         raise TypeError(f"evaluate: contact must be 'wall' or 'pair', got {contact!r}")
-    partners = {"wall": ("wall_youngs_modulus", "wall_poisson_ratio"),
-                "other": ("other_youngs_modulus", "other_poisson_ratio", "other_radius", "other_density")}
-    for what, keys in partners.items():
-        given = [k for k in keys if k in physical]
-        if given and len(given) != len(keys):
-            raise _viscor.InvalidParameter(f"evaluate: the {what} needs all of {', '.join(keys)} (given: "
-                                           f"{', '.join(given)})")
-        if given and "youngs_modulus" not in physical:
-            raise _viscor.InvalidParameter(f"evaluate: {given[0]} needs the bead as a material (youngs_modulus, ...)")
-    if contact == "pair" and "youngs_modulus" not in physical:
-        raise _viscor.InvalidParameter("evaluate: contact='pair' needs the beads as materials (youngs_modulus, ...)")
-    if "wall_youngs_modulus" in physical and contact != "wall":
-        raise _viscor.InvalidParameter("evaluate: wall_youngs_modulus describes a wall, not contact='pair'")
-    if "other_youngs_modulus" in physical and contact != "pair":
-        raise _viscor.InvalidParameter("evaluate: other_youngs_modulus describes the second bead of contact='pair'")
-    bead = ("youngs_modulus", "poisson_ratio", "radius") if "youngs_modulus" in physical else ("m", "k")
-    for needed in bead + ("v0", "gamma0", "gravity"):
-        if needed not in physical:
-            raise _viscor.InvalidParameter(f"evaluate: the physical inputs need {needed} (given: "
-                                           f"{', '.join(physical)}); gravity never defaults (0 for none)")
-    if "youngs_modulus" in physical and "m" not in physical and "density" not in physical:
-        raise _viscor.InvalidParameter("evaluate: a bead given as a material needs m or density")
+    # Which inputs are needed with which is the library's rule (physical_inputs::check_complete),
+    # applied to these names by _viscor.scaled_arrays.
     names = list(physical)
     try:
         arrays = [np.asarray(physical[k], dtype=np.float64) for k in names] + [np.asarray(tol, dtype=np.float64)]

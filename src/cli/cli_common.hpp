@@ -16,6 +16,8 @@
 #include <viscor/jobs/json_fields.hpp>
 #include <viscor/jobs/files.hpp>
 
+#include "option_spelling.hpp"
+
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
@@ -101,7 +103,7 @@ struct output_options {
             refuse_unless_regular_or_absent(value);
             jobs::refuse_committed_unless_allowed(value);  // viscor --update-committed comes before the subcommand
           } catch (const error& e) {
-            return std::string(e.what());
+            return spelled(e);
           }
           return std::string();
         },

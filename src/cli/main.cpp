@@ -2,6 +2,7 @@
 // Exit codes: 0 success, 1 a check that ran and failed (`formula check`), 2 usage or input error (the message names the option or
 // value) or a failed write (an output file, or standard output), 3 internal error.
 #include "command_registry.hpp"
+#include "option_spelling.hpp"
 
 #include <viscor/config.hpp>
 #include <viscor/core/exceptions.hpp>
@@ -31,6 +32,7 @@ int main(int argc, char** argv) {
       "allow outputs to replace committed data (a file a SHA256SUMS beside it lists) and update its checksum line; "
       "give it before the subcommand");
   viscor::cli::add_commands(app);  // every subcommand; empty values refused
+  viscor::current_warning_handler() = viscor::cli::print_warning;  // fields spelled as options
   try {
     viscor::cli::refuse_empty_assignments(argc, argv);
     app.parse(argc, argv);
@@ -52,7 +54,7 @@ int main(int argc, char** argv) {
               << " --help' for the options)\n";
     return 2;
   } catch (const viscor::error& e) {
-    std::cerr << "viscor: error: " << e.what() << '\n';
+    std::cerr << "viscor: error: " << viscor::cli::spelled(e) << '\n';
     return 2;
   } catch (const std::exception& e) {
     std::cerr << "viscor: internal error: " << e.what() << '\n';

@@ -105,7 +105,7 @@ struct approx_job : approx_request {
 
   approx_result run() const {
     const contact_law& model = law;
-    if (gamma.empty()) throw invalid_parameter("approx needs --gamma");
+    if (gamma.empty()) throw invalid_parameter("approx needs " VISCOR_FIELD("gamma"));
     if (formula == "surrogate") return run_surrogate(model);
     bool known = false;
     for (const char* f : formula_names) known = known || formula == f;

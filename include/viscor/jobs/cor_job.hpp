@@ -35,7 +35,7 @@ inline contact_law resolve_law(const std::string& name, const std::string& alpha
 }
 
 /// "taylor" or "adaptive"; `option` names the input in the message.
-inline integration_method parse_integration_method(const std::string& text, const std::string& option = "--method") {
+inline integration_method parse_integration_method(const std::string& text, const std::string& option = VISCOR_FIELD("method")) {
   if (text == "taylor") return integration_method::taylor;
   if (text == "adaptive") return integration_method::adaptive;
   throw invalid_parameter(option + " must be 'taylor' or 'adaptive', got '" + text + "'");
@@ -59,10 +59,10 @@ namespace detail {
 // --prove needs exact decimal inputs and rational exponents: checked before any work.
 inline void check_provable(const contact_law& law, bool is_physical) {
   if (is_physical)
-    throw invalid_parameter("--prove needs the scaled --gamma and --g (exact decimals), not physical inputs");
+    throw invalid_parameter(VISCOR_FIELD("prove") " needs the scaled " VISCOR_FIELD("gamma") " and " VISCOR_FIELD("g") " (exact decimals), not physical inputs");
   if (const std::string why = law.why_not_provable(); !why.empty()) throw invalid_parameter(why);
 #if !defined(VISCOR_WITH_ENCLOSE)
-  throw invalid_parameter("--prove: this viscor was built without Arb (apt-get install libflint-arb-dev)");
+  throw invalid_parameter(VISCOR_FIELD("prove") ": this viscor was built without Arb (apt-get install libflint-arb-dev)");
 #endif
 }
 
@@ -92,13 +92,13 @@ inline cor_result run_cor(cor_request q) {
   const bool is_physical = q.physical.given();
   if (is_physical && (q.gamma || q.g))
     throw invalid_parameter("give either the physical inputs (" + q.physical.given_names() +
-                            ") or the scaled --gamma/--g, not both");
+                            ") or the scaled " VISCOR_FIELD("gamma") "/" VISCOR_FIELD("g") ", not both");
   if (!is_physical && !q.gamma)
-    throw invalid_parameter("cor needs --gamma (and optionally --g), or the physical inputs --m --k --gamma0 --v0 "
-                            "--gravity [--force], or --points FILE");
+    throw invalid_parameter("cor needs " VISCOR_FIELD("gamma") " (and optionally " VISCOR_FIELD("g") "), or the physical inputs " VISCOR_FIELD("m") " " VISCOR_FIELD("k") " " VISCOR_FIELD("gamma0") " " VISCOR_FIELD("v0") " "
+                            VISCOR_FIELD("gravity") " [" VISCOR_FIELD("force") "], or " VISCOR_FIELD("points") " FILE");
   if (is_physical) {
     q.physical.check("cor");
-    if (!q.physical.gamma0) throw invalid_parameter("cor: physical mode needs --gamma0 (the damping coefficient, SI)");
+    q.physical.require_gamma0("cor");
   }
   if (q.prove) detail::check_provable(q.law, is_physical);
   cor_result out = with_working_precision(q.digits, [&]<class Real>() {

@@ -30,7 +30,7 @@ inline std::filesystem::path executable_directory() {
 inline std::string data_directory(const std::string& given = "") {
   namespace fs = std::filesystem;
   if (!given.empty()) {
-    if (!fs::is_directory(given)) throw invalid_parameter("--data: '" + given + "' is not a directory");
+    if (!fs::is_directory(given)) throw invalid_parameter(VISCOR_FIELD("data") ": '" + given + "' is not a directory");
     return given;
   }
   if (const char* env = std::getenv("VISCOR_DATA"); env && *env) {
@@ -51,7 +51,7 @@ inline std::string data_directory(const std::string& given = "") {
   if (fs::is_directory(VISCOR_SOURCE_DATA_DIR)) return VISCOR_SOURCE_DATA_DIR;
   tried += std::string(tried.empty() ? "" : ", ") + VISCOR_SOURCE_DATA_DIR;
 #endif
-  throw invalid_parameter("no data directory found (tried " + tried + "): give --data DIR or set VISCOR_DATA");
+  throw invalid_parameter("no data directory found (tried " + tried + "): give " VISCOR_FIELD("data") " DIR or set VISCOR_DATA");
 }
 
 /// The error maps directory: <data>/error_maps, or "" when there is none.

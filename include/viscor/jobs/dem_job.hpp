@@ -15,9 +15,11 @@
 #include <viscor/core/precision.hpp>
 #include <viscor/core/real_io.hpp>
 #include <viscor/core/text_fields.hpp>
+#include <viscor/dem/deck_entries.hpp>
 #include <viscor/dem/dem_calibration.hpp>
 #include <viscor/dem/deck_snippet.hpp>
 #include <viscor/dem/drop_deck.hpp>
+#include <viscor/dem/variable_block.hpp>
 
 #include <chrono>
 #include <filesystem>
@@ -127,23 +129,23 @@ struct dem_job : dem_request {
     const bool other_given = !other_youngs_modulus.empty() || !other_poisson_ratio.empty() || !other_radius.empty() ||
                              !other_density.empty();
     if (wall_given && kind != dem::contact_kind::wall)
-      throw invalid_parameter("--wall-youngs-modulus and --wall-poisson-ratio describe a wall: they need --contact "
-                              "wall, not --contact " + contact);
+      throw invalid_parameter(VISCOR_FIELD("wall_youngs_modulus") " and " VISCOR_FIELD("wall_poisson_ratio") " describe a wall: they need " VISCOR_FIELD("contact") " "
+                              "wall, not " VISCOR_FIELD("contact") " " + contact);
     if (other_given && kind != dem::contact_kind::pair)
-      throw invalid_parameter("--other-youngs-modulus, --other-poisson-ratio, --other-radius and --other-density "
-                              "describe the second bead of --contact pair, not of --contact " + contact);
+      throw invalid_parameter(VISCOR_FIELD("other_youngs_modulus") ", " VISCOR_FIELD("other_poisson_ratio") ", " VISCOR_FIELD("other_radius") " and " VISCOR_FIELD("other_density") " "
+                              "describe the second bead of " VISCOR_FIELD("contact") " pair, not of " VISCOR_FIELD("contact") " " + contact);
     if (wall_given) {
-      require(wall_youngs_modulus, "--wall-youngs-modulus", "the wall's Young's modulus, Pa; neither: a rigid wall");
-      require(wall_poisson_ratio, "--wall-poisson-ratio", "the wall's Poisson ratio");
+      require(wall_youngs_modulus, VISCOR_FIELD("wall_youngs_modulus"), "the wall's Young's modulus, Pa; neither: a rigid wall");
+      require(wall_poisson_ratio, VISCOR_FIELD("wall_poisson_ratio"), "the wall's Poisson ratio");
       p.wall = elastic_material<Real>{parse_real<Real>(wall_youngs_modulus, "wall_youngs_modulus"),
                                       parse_real<Real>(wall_poisson_ratio, "wall_poisson_ratio")};
     }
     if (other_given) {
       const char* what = "the other bead's material: give all four, or none for a bead like the first";
-      require(other_youngs_modulus, "--other-youngs-modulus", what);
-      require(other_poisson_ratio, "--other-poisson-ratio", what);
-      require(other_radius, "--other-radius", what);
-      require(other_density, "--other-density", what);
+      require(other_youngs_modulus, VISCOR_FIELD("other_youngs_modulus"), what);
+      require(other_poisson_ratio, VISCOR_FIELD("other_poisson_ratio"), what);
+      require(other_radius, VISCOR_FIELD("other_radius"), what);
+      require(other_density, VISCOR_FIELD("other_density"), what);
       p.other = dem::bead_material<Real>{parse_real<Real>(other_youngs_modulus, "other_youngs_modulus"),
                                          parse_real<Real>(other_poisson_ratio, "other_poisson_ratio"),
                                          parse_real<Real>(other_radius, "other_radius"),
@@ -156,63 +158,63 @@ struct dem_job : dem_request {
   void check_units() const {
     require_gravity_towards_wall(std::optional<std::string>(gravity));
     const auto given = [](const std::string& v) { return v.empty() ? std::nullopt : std::optional<std::string>(v); };
-    check_plausible_unit(physical_quantity::youngs_modulus, given(youngs_modulus), "--youngs-modulus", strict);
-    check_plausible_unit(physical_quantity::density, given(density), "--density", strict);
-    check_plausible_unit(physical_quantity::radius, given(radius), "--radius", strict);
-    check_plausible_unit(physical_quantity::speed, given(v0), "--v0", strict);
-    check_plausible_unit(physical_quantity::gravity, given(gravity), "--gravity", strict);
-    check_plausible_unit(physical_quantity::youngs_modulus, given(wall_youngs_modulus), "--wall-youngs-modulus", strict);
-    check_plausible_unit(physical_quantity::youngs_modulus, given(other_youngs_modulus), "--other-youngs-modulus", strict);
-    check_plausible_unit(physical_quantity::density, given(other_density), "--other-density", strict);
-    check_plausible_unit(physical_quantity::radius, given(other_radius), "--other-radius", strict);
+    check_plausible_unit(physical_quantity::youngs_modulus, given(youngs_modulus), VISCOR_FIELD("youngs_modulus"), strict);
+    check_plausible_unit(physical_quantity::density, given(density), VISCOR_FIELD("density"), strict);
+    check_plausible_unit(physical_quantity::radius, given(radius), VISCOR_FIELD("radius"), strict);
+    check_plausible_unit(physical_quantity::speed, given(v0), VISCOR_FIELD("v0"), strict);
+    check_plausible_unit(physical_quantity::gravity, given(gravity), VISCOR_FIELD("gravity"), strict);
+    check_plausible_unit(physical_quantity::youngs_modulus, given(wall_youngs_modulus), VISCOR_FIELD("wall_youngs_modulus"), strict);
+    check_plausible_unit(physical_quantity::youngs_modulus, given(other_youngs_modulus), VISCOR_FIELD("other_youngs_modulus"), strict);
+    check_plausible_unit(physical_quantity::density, given(other_density), VISCOR_FIELD("other_density"), strict);
+    check_plausible_unit(physical_quantity::radius, given(other_radius), VISCOR_FIELD("other_radius"), strict);
   }
 
   dem_result run() const {
-    require(code, "CODE", "lammps, liggghts or yade");
-    require(damping, "--damping", "the code's damping model");
+    require(code, VISCOR_FIELD("code"), "lammps, liggghts or yade");
+    require(damping, VISCOR_FIELD("damping"), "the code's damping model");
     const dem::dem_model& model = dem::find_dem_model(code, damping);
     const dem::contact_kind kind = dem::parse_contact_kind(contact);
     const bool linear = dem::takes_linear_stiffness(model);
     if (linear) {  // YADE's visco-elastic law: a linear spring, not a Hertz contact of the material
-      require(stiffness, "--k", "the contact's normal stiffness kn, N/m: the visco-elastic law is a linear spring");
-      for (const auto& [value, option] : {std::pair{&youngs_modulus, "--youngs-modulus"}, {&poisson_ratio, "--poisson-ratio"}})
+      require(stiffness, VISCOR_FIELD("k"), "the contact's normal stiffness kn, N/m: the visco-elastic law is a linear spring");
+      for (const auto& [value, option] : {std::pair{&youngs_modulus, VISCOR_FIELD("youngs_modulus")}, {&poisson_ratio, VISCOR_FIELD("poisson_ratio")}})
         if (!value->empty())
           throw invalid_parameter(std::string(option) + " " + *value + " is not an input of " + code + " " + damping +
-                                  ": its linear spring takes the contact stiffness --k (N/m), not a Hertz material");
+                                  ": its linear spring takes the contact stiffness " VISCOR_FIELD("k") " (N/m), not a Hertz material");
     } else {
       if (!stiffness.empty())
-        throw invalid_parameter("--k " + stiffness + " is the linear stiffness of yade viscoelastic; " + code + " " +
-                                damping + " takes its Hertz stiffness from --youngs-modulus and --poisson-ratio");
-      require(youngs_modulus, "--youngs-modulus", "Pa");
-      require(poisson_ratio, "--poisson-ratio", "dimensionless");
+        throw invalid_parameter(VISCOR_FIELD("k") " " + stiffness + " is the linear stiffness of yade viscoelastic; " + code + " " +
+                                damping + " takes its Hertz stiffness from " VISCOR_FIELD("youngs_modulus") " and " VISCOR_FIELD("poisson_ratio"));
+      require(youngs_modulus, VISCOR_FIELD("youngs_modulus"), "Pa");
+      require(poisson_ratio, VISCOR_FIELD("poisson_ratio"), "dimensionless");
     }
-    require(radius, "--radius", "m");
-    require(density, "--density", "kg/m^3");
-    require(gravity, "--gravity", "m/s^2 towards the wall; 0 for none");
+    require(radius, VISCOR_FIELD("radius"), "m");
+    require(density, VISCOR_FIELD("density"), "kg/m^3");
+    require(gravity, VISCOR_FIELD("gravity"), "m/s^2 towards the wall; 0 for none");
     check_units();
     if (!deck_damping.empty() && !deck_en.empty())
-      throw invalid_parameter("give either --deck-damping (the deck's betan) or --deck-en (YADE's en), not both");
+      throw invalid_parameter("give either " VISCOR_FIELD("deck_damping") " (the deck's betan) or " VISCOR_FIELD("deck_en") " (YADE's en), not both");
     if (!deck_en.empty() && model.damping != dem::damping_model::mindlin)
-      throw invalid_parameter("--deck-en " + deck_en + " is YADE's `en` input of Hertz-Mindlin (yade --damping "
+      throw invalid_parameter(VISCOR_FIELD("deck_en") " " + deck_en + " is YADE's `en` input of Hertz-Mindlin (yade " VISCOR_FIELD("damping") " "
                               "mindlin), not an input of " + code + " " + damping);
     const bool reverse = !deck_damping.empty() || !deck_en.empty();
     if (reverse && !target_e.empty())
-      throw invalid_parameter("give either --target-e (deck for a measured e) or --deck-damping/--deck-en (e for a "
+      throw invalid_parameter("give either " VISCOR_FIELD("target_e") " (deck for a measured e) or " VISCOR_FIELD("deck_damping") "/" VISCOR_FIELD("deck_en") " (e for a "
                               "deck), not both");
     if (!drop_deck_path.empty() && reverse)
-      throw invalid_parameter("--drop-deck " + drop_deck_path + " writes the drop for a calibrated deck: give "
-                              "--target-e, not --deck-damping/--deck-en");
+      throw invalid_parameter(VISCOR_FIELD("drop_deck") " " + drop_deck_path + " writes the drop for a calibrated deck: give "
+                              VISCOR_FIELD("target_e") ", not " VISCOR_FIELD("deck_damping") "/" VISCOR_FIELD("deck_en"));
     if (!drop_deck_path.empty() && kind != dem::contact_kind::wall)
-      throw invalid_parameter("--drop-deck " + drop_deck_path + " drops one bead on a wall: it needs --contact wall, "
-                              "not --contact " + contact);
+      throw invalid_parameter(VISCOR_FIELD("drop_deck") " " + drop_deck_path + " drops one bead on a wall: it needs " VISCOR_FIELD("contact") " wall, "
+                              "not " VISCOR_FIELD("contact") " " + contact);
     if (!drop_deck_path.empty() && model.code == dem::dem_code::yade && !drop_deck_path.ends_with(".py"))
-      throw invalid_parameter("--drop-deck " + drop_deck_path + ": a YADE script must end in .py (yade -x "
+      throw invalid_parameter(VISCOR_FIELD("drop_deck") " " + drop_deck_path + ": a YADE script must end in .py (yade -x "
                               "silently skips other files)");
     if (!variables_path.empty()) check_variables_request(model, reverse);
     refuse_outputs_not_ours();  // before any work: a foreign file, a FIFO or a directory
     if (!reverse) {
-      require(target_e, "--target-e", "the measured coefficient of restitution, 0 < e < 1");
-      require(v0, "--v0", "impact speed, m/s");
+      require(target_e, VISCOR_FIELD("target_e"), "the measured coefficient of restitution, 0 < e < 1");
+      require(v0, VISCOR_FIELD("v0"), "impact speed, m/s");
     }
     return with_working_precision(digits, [&]<class Real>() {
       dem::dem_impact<Real> impact;
@@ -258,7 +260,7 @@ struct dem_job : dem_request {
     const dem::dem_deck<Real> d = dem::dem_deck_for(model, impact, target, options);
     dem_forward out;
     out.target_e = target_e;
-    out.deck = deck_strings_for(model, impact, d, target);
+    out.deck = dem::deck_entries_for(model, impact, d, target);
     out.damping_number = of(d.damping_number);
     out.gamma0 = of(d.gamma0);
     out.gamma = of(d.calibration.scaled.gamma), out.g = of(d.calibration.scaled.g);
@@ -295,71 +297,29 @@ struct dem_job : dem_request {
     out.steps_per_contact = static_cast<long>(static_cast<double>(timing.contact_time / timing.time_step));
     write_deck_files(drop_deck_path.empty() ? std::string() : dem::drop_deck(model, out.deck, drop_inputs(impact, timing)),
                      variables_path.empty() ? std::string()
-                                            : variable_block(model, impact.kind, out.deck, drop_inputs(impact, timing),
+                                            : dem::variable_block(model, impact.kind, out.deck, drop_inputs(impact, timing),
                                                              to_decimal_string(timing.contact_time)));
     out.drop_deck_path = drop_deck_path, out.variables_path = variables_path;
     return out;
   }
 
-  /// The first line of every variable block viscor writes (--variables replaces only such a file).
-  static constexpr const char* variables_marker = "# viscor dem variables";
-
   /// --variables: LAMMPS and LIGGGHTS only (a YADE script asks viscor itself), forward only.
   void check_variables_request(const dem::dem_model& model, bool reverse) const {
     if (model.code == dem::dem_code::yade)
-      throw invalid_parameter("--variables " + variables_path + " writes a LAMMPS/LIGGGHTS `variable` block; a YADE "
+      throw invalid_parameter(VISCOR_FIELD("variables") " " + variables_path + " writes a LAMMPS/LIGGGHTS `variable` block; a YADE "
                               "script is Python: import viscor and call viscor.dem(...) in it (docs/dem.md)");
     if (reverse)
-      throw invalid_parameter("--variables " + variables_path + " writes the entries of a calibrated deck: give "
-                              "--target-e, not --deck-damping/--deck-en");
-  }
-
-  /// The deck entries, the impact they are calibrated for and the time step as LAMMPS/LIGGGHTS
-  /// `variable NAME string VALUE` lines (exact decimal text, substituted verbatim by ${NAME}).
-  static std::string variable_block(const dem::dem_model& model, dem::contact_kind kind, const dem::deck_strings& s,
-                                    const dem::drop_deck_inputs& in, const std::string& contact_time) {
-    std::string b = std::string(variables_marker) + ": " + std::string(model.version) + ", " +
-                    std::string(model.code_name) + " damping " + std::string(model.damping_name) + " on a " +
-                    std::string(dem::to_string(kind)) + " (viscor law " + std::string(model.law_name) + ")\n";
-    b += "# use: `include FILE` in a deck with `units si`, then ${viscor_NAME} where the values go\n";
-    const auto line = [&b](const std::string& name, const std::string& value) {
-      b += "variable viscor_" + name + " string " + value + "\n";
-    };
-    b += "# the impact the entries are calibrated for (SI units, as given to viscor dem)\n";
-    line("radius", in.radius), line("diameter", in.diameter), line("density", in.density);
-    line("v0", in.v0), line("gravity", in.gravity), line("force", in.force), line("target_e", in.target_e);
-    b += model.code == dem::dem_code::liggghts
-             ? "# model hertz: youngsModulus and poissonsRatio of the bead type; damping = the bead-wall\n"
-               "# coefficientRestitution; wall_youngs_modulus = the wall type's youngsModulus (1e30: rigid)\n"
-             : "# hertz/material E damp nu damping " + std::string(model.damping_name) +
-                   ": youngs_modulus = E, damping = damp, poisson_ratio = nu\n";
-    line("youngs_modulus", s.youngs_modulus), line("poisson_ratio", s.poisson_ratio), line("damping", s.damping);
-    if (s.wall_youngs_modulus) line("wall_youngs_modulus", *s.wall_youngs_modulus);
-    if (s.wall_poisson_ratio) line("wall_poisson_ratio", *s.wall_poisson_ratio);
-    if (s.other_youngs_modulus) {
-      b += "# the other bead (type 2) and, for LAMMPS, the explicit cross entry pair_coeff 1 2\n";
-      line("other_youngs_modulus", *s.other_youngs_modulus), line("other_poisson_ratio", *s.other_poisson_ratio);
-      if (s.cross_youngs_modulus) line("cross_youngs_modulus", *s.cross_youngs_modulus);
-      if (s.other_other_damping) line("other_other_damping", *s.other_other_damping);
-    }
-    if (s.bead_bead_damping) {
-      b += "# bead-bead entries: two beads at the same e and approach speed, without load\n";
-      line("bead_bead_youngs_modulus", s.bead_bead_youngs_modulus.value_or(s.youngs_modulus));
-      line("bead_bead_damping", *s.bead_bead_damping);
-    }
-    b += "# the recommended time step, T/" + in.steps_per_time_scale + " (halve it for a smaller error), and how "
-         "long the contact lasts, s\n";
-    line("time_step", in.time_step), line("contact_time", contact_time);
-    return b;
+      throw invalid_parameter(VISCOR_FIELD("variables") " " + variables_path + " writes the entries of a calibrated deck: give "
+                              VISCOR_FIELD("target_e") ", not " VISCOR_FIELD("deck_damping") "/" VISCOR_FIELD("deck_en"));
   }
 
   /// Refuses a --drop-deck or --variables path that holds anything but viscor's own
   /// unedited file of that kind (jobs/files.hpp: its seal), a FIFO, a directory or a device.
   void refuse_outputs_not_ours() const {
     if (!drop_deck_path.empty())
-      refuse_unless_own_or_absent(drop_deck_path, dem::drop_deck_marker, "--drop-deck", "a drop deck");
+      refuse_unless_own_or_absent(drop_deck_path, dem::drop_deck_marker, VISCOR_FIELD("drop_deck"), "a drop deck");
     if (!variables_path.empty())
-      refuse_unless_own_or_absent(variables_path, variables_marker, "--variables", "a variable block");
+      refuse_unless_own_or_absent(variables_path, dem::variables_marker, VISCOR_FIELD("variables"), "a variable block");
   }
 
   /// Writes the drop deck and the variable block that were asked for, each sealed (its last
@@ -371,56 +331,6 @@ struct dem_job : dem_request {
     if (!drop_deck_path.empty()) files.push_back({drop_deck_path, sealed(deck)});
     if (!variables_path.empty()) files.push_back({variables_path, sealed(block)});
     write_together(files);
-  }
-
-  /// LAMMPS and LIGGGHTS read the like-bead entries apart from the contact's (pair_coeff, type pairs (1,1), (2,2))
-  /// on a wall and for two bead types.
-  template <class Real>
-  static bool reads_like_beads_separately(const dem::dem_model& model, const dem::dem_impact<Real>& impact) {
-    return model.code != dem::dem_code::yade && (impact.kind == dem::contact_kind::wall || impact.partner.other);
-  }
-
-  /// The deck of two beads like `bead` at the same e and approach speed without load (gravity drops out of a pair).
-  template <class Real>
-  static dem::dem_deck<Real> like_beads_deck(const dem::dem_model& model, const dem::dem_impact<Real>& impact,
-                                             const dem::bead_material<Real>& bead, const Real& target) {
-    dem::dem_impact<Real> pair = impact;
-    pair.bead = bead;
-    pair.kind = dem::contact_kind::pair, pair.partner = {}, pair.gravity = 0, pair.force = 0;
-    return dem::dem_deck_for(model, pair, target);
-  }
-
-  /// The deck values as written into the input (dem::deck_number), with the like-bead entries where the code
-  /// reads them apart.
-  template <class Real>
-  static dem::deck_strings deck_strings_for(const dem::dem_model& model, const dem::dem_impact<Real>& impact,
-                                            const dem::dem_deck<Real>& d, const Real& target) {
-    using dem::deck_number;
-    dem::deck_strings s;
-    s.damping = deck_number(d.damping);
-    s.wall_material = impact.partner.wall.has_value();
-    auto put = [](std::optional<std::string>& to, const std::optional<Real>& value) {
-      if (value) to = deck_number(*value);
-    };
-    if (d.stiffness) {  // YADE visco-elastic: the bead material's kn, cn; a rigid wall material
-      s.stiffness = deck_number(*d.stiffness);
-      if (impact.kind == dem::contact_kind::wall) s.wall_youngs_modulus = dem::yade_rigid_wall_viscel;
-      return s;
-    }
-    s.youngs_modulus = deck_number(d.youngs_modulus);
-    s.poisson_ratio = deck_number(d.poisson_ratio);
-    put(s.wall_youngs_modulus, d.wall_youngs_modulus), put(s.wall_poisson_ratio, d.wall_poisson_ratio);
-    if (s.wall_youngs_modulus && !d.wall_poisson_ratio) s.wall_youngs_modulus = dem::liggghts_rigid_wall_modulus;
-    put(s.other_youngs_modulus, d.other_youngs_modulus), put(s.other_poisson_ratio, d.other_poisson_ratio);
-    put(s.cross_youngs_modulus, d.cross_youngs_modulus);
-    if (reads_like_beads_separately(model, impact)) {
-      const dem::dem_deck<Real> like = like_beads_deck(model, impact, impact.bead, target);
-      if (impact.kind == dem::contact_kind::wall) s.bead_bead_youngs_modulus = deck_number(like.youngs_modulus);
-      s.bead_bead_damping = deck_number(like.damping);
-      if (impact.partner.other)
-        s.other_other_damping = deck_number(like_beads_deck(model, impact, *impact.partner.other, target).damping);
-    }
-    return s;
   }
 
   template <class Real>
@@ -446,9 +356,9 @@ struct dem_job : dem_request {
       deck_value = parse_real<Real>(deck_damping, "deck_damping");
     }
     dem::validate_deck_damping(model, deck_value);
-    std::vector<std::string> speed_list = split_list(speeds, "--speeds");
+    std::vector<std::string> speed_list = split_list(speeds, VISCOR_FIELD("speeds"));
     if (!v0.empty()) speed_list.insert(speed_list.begin(), v0);
-    if (speed_list.empty()) throw invalid_parameter("--speeds lists no speed (got '" + speeds + "')");
+    if (speed_list.empty()) throw invalid_parameter(VISCOR_FIELD("speeds") " lists no speed (got '" + speeds + "')");
     struct load { std::string gravity, force; };
     std::vector<load> loads{{"0", "0"}};
     if (impact.gravity != 0 || impact.force != 0) loads.push_back({gravity, force});

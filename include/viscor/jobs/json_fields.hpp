@@ -11,6 +11,7 @@
 #include <viscor/core/precision.hpp>
 #include <viscor/core/real_io.hpp>
 #include <viscor/core/real_types.hpp>
+#include <viscor/core/warnings.hpp>
 #include <viscor/jobs/files.hpp>
 #include <viscor/jobs/precision_used.hpp>
 
@@ -66,9 +67,9 @@ inline json parse_json_text(const std::string& text, const std::string& where) {
   }
 }
 
-/// An old spelling that still works (until 1.0): one line on stderr naming the new one.
+/// An old spelling that still works (until 1.0): a warning naming the new one (core/warnings.hpp).
 inline void deprecation_warning(const std::string& old_spelling, const std::string& new_spelling) {
-  std::cerr << "viscor: warning: " << old_spelling << " is deprecated; use " << new_spelling << "\n";
+  warn(old_spelling + " is deprecated; use " + new_spelling);
 }
 
 /// Reads and parses a JSON file (parse_json_text).

@@ -50,8 +50,8 @@ std::pair<Real, Real> bead_of_material(const contact_law& law, const Real& young
                                        dem::contact_kind kind = dem::contact_kind::wall,
                                        const dem::contact_partner<Real>& partner = {}) {
   if (!(law.alpha == exponent::rational(3, 2)))
-    throw invalid_parameter("--youngs-modulus gives a Hertz stiffness, which holds only for alpha = 3/2; the law has "
-                            "alpha = " + law.alpha.to_string() + ": give --k instead");
+    throw invalid_parameter(VISCOR_FIELD("youngs_modulus") " gives a Hertz stiffness, which holds only for alpha = 3/2; the law has "
+                            "alpha = " + law.alpha.to_string() + ": give " VISCOR_FIELD("k") " instead");
   require_positive(radius, "radius");
   elastic_material<Real> material{youngs_modulus, poisson_ratio};
   material.validate("bead");
@@ -103,44 +103,59 @@ struct physical_inputs {
     auto add = [&](const auto& o, const char* name) {
       if (o) s += std::string(s.empty() ? "" : ", ") + name;
     };
-    add(m, "--m"), add(k, "--k"), add(v0, "--v0"), add(gamma0, "--gamma0"), add(gravity, "--gravity");
-    add(force, "--force"), add(youngs_modulus, "--youngs-modulus"), add(poisson_ratio, "--poisson-ratio");
-    add(radius, "--radius"), add(density, "--density"), add(contact, "--contact");
-    add(wall_youngs_modulus, "--wall-youngs-modulus"), add(wall_poisson_ratio, "--wall-poisson-ratio");
-    add(other_youngs_modulus, "--other-youngs-modulus"), add(other_poisson_ratio, "--other-poisson-ratio");
-    add(other_radius, "--other-radius"), add(other_density, "--other-density");
+    add(m, VISCOR_FIELD("m")), add(k, VISCOR_FIELD("k")), add(v0, VISCOR_FIELD("v0")), add(gamma0, VISCOR_FIELD("gamma0")), add(gravity, VISCOR_FIELD("gravity"));
+    add(force, VISCOR_FIELD("force")), add(youngs_modulus, VISCOR_FIELD("youngs_modulus")), add(poisson_ratio, VISCOR_FIELD("poisson_ratio"));
+    add(radius, VISCOR_FIELD("radius")), add(density, VISCOR_FIELD("density")), add(contact, VISCOR_FIELD("contact"));
+    add(wall_youngs_modulus, VISCOR_FIELD("wall_youngs_modulus")), add(wall_poisson_ratio, VISCOR_FIELD("wall_poisson_ratio"));
+    add(other_youngs_modulus, VISCOR_FIELD("other_youngs_modulus")), add(other_poisson_ratio, VISCOR_FIELD("other_poisson_ratio"));
+    add(other_radius, VISCOR_FIELD("other_radius")), add(other_density, VISCOR_FIELD("other_density"));
     return s;
   }
 
-  /// Checks completeness and folds the deprecated spelling in (warning on stderr).
-  /// `needs_gamma0`: cor needs it, scale defaults it to 0 (physical -> scaled of the load only).
+  /// Folds the deprecated spelling in (with a warning), checks completeness
+  /// (check_complete) and the values: gravity towards the wall, every input within
+  /// double's range, and plausible units (a warning, or refused when strict).
   void check(const std::string& command) {
     if (deprecated_force) {
-      if (force) throw invalid_parameter("give --force, not both --force and --F (--F is its deprecated spelling)");
-      deprecation_warning("--F", "--force");
+      if (force) throw invalid_parameter("give " VISCOR_FIELD("force") ", not both " VISCOR_FIELD("force") " and " VISCOR_FIELD("F") " (" VISCOR_FIELD("F") " is its deprecated spelling)");
+      deprecation_warning(VISCOR_FIELD("F"), VISCOR_FIELD("force"));
       force = deprecated_force;
       deprecated_force.reset();
     }
-    if (has_material()) {
-      if (k) throw invalid_parameter(command + ": give the stiffness either as --k or as --youngs-modulus, "
-                                               "--poisson-ratio and --radius, not both");
-      if (!youngs_modulus || !poisson_ratio || !radius)
-        throw invalid_parameter(command + ": a bead given as a material needs --youngs-modulus, --poisson-ratio and "
-                                          "--radius (missing " + missing_material() + ")");
-      if (m && density) throw invalid_parameter(command + ": give the mass either as --m or as --density, not both");
-      if (!m && !density) throw invalid_parameter(command + ": the bead needs --m (kg) or --density (kg/m^3)");
-    } else {
-      if (!m) throw invalid_parameter(command + ": physical mode needs --m (bead mass, kg)");
-      if (!k) throw invalid_parameter(command + ": physical mode needs --k (contact stiffness, N/m^alpha)");
-    }
-    check_partner(command);
-    if (!v0) throw invalid_parameter(command + ": physical mode needs --v0 (impact speed, m/s)");
-    if (!gravity)
-      throw invalid_parameter(command + ": physical mode needs --gravity (m/s^2 towards the wall; 0 for none): "
-                                        "the load changes the result, so it never defaults");
+    check_complete(command);
     require_gravity_towards_wall(gravity);
     require_double_range();
     check_plausible_units();
+  }
+
+  /// Which inputs are given, not their values: the bead as (m, k) or as a material
+  /// (youngs_modulus, poisson_ratio, radius, and m or density), a wall material or a
+  /// second bead only with a material bead and the fitting contact, v0, and gravity,
+  /// which never defaults. `command` begins each message. (Python's evaluate checks
+  /// its arrays' names here too.)
+  void check_complete(const std::string& command) const {
+    if (has_material()) {
+      if (k) throw invalid_parameter(command + ": give the stiffness either as " VISCOR_FIELD("k") " or as " VISCOR_FIELD("youngs_modulus") ", "
+                                               VISCOR_FIELD("poisson_ratio") " and " VISCOR_FIELD("radius") ", not both");
+      if (!youngs_modulus || !poisson_ratio || !radius)
+        throw invalid_parameter(command + ": a bead given as a material needs " VISCOR_FIELD("youngs_modulus") ", " VISCOR_FIELD("poisson_ratio") " and "
+                                          VISCOR_FIELD("radius") " (missing " + missing_material() + ")");
+      if (m && density) throw invalid_parameter(command + ": give the mass either as " VISCOR_FIELD("m") " or as " VISCOR_FIELD("density") ", not both");
+      if (!m && !density) throw invalid_parameter(command + ": the bead needs " VISCOR_FIELD("m") " (kg) or " VISCOR_FIELD("density") " (kg/m^3)");
+    } else {
+      if (!m) throw invalid_parameter(command + ": physical mode needs " VISCOR_FIELD("m") " (bead mass, kg)");
+      if (!k) throw invalid_parameter(command + ": physical mode needs " VISCOR_FIELD("k") " (contact stiffness, N/m^alpha)");
+    }
+    check_partner(command);
+    if (!v0) throw invalid_parameter(command + ": physical mode needs " VISCOR_FIELD("v0") " (impact speed, m/s)");
+    if (!gravity)
+      throw invalid_parameter(command + ": physical mode needs " VISCOR_FIELD("gravity") " (m/s^2 towards the wall; 0 for none): "
+                                        "the load changes the result, so it never defaults");
+  }
+
+  /// Solving an impact from physical inputs (cor, evaluate) needs the damping gamma0.
+  void require_gamma0(const std::string& command) const {
+    if (!gamma0) throw invalid_parameter(command + ": physical mode needs " VISCOR_FIELD("gamma0") " (the damping coefficient, SI)");
   }
 
   /// Every physical input is an SI value within double's normal range (about 2.2e-308 to
@@ -160,38 +175,38 @@ struct physical_inputs {
 
   /// Warns (refuses under --strict) about inputs far outside their quantity's range.
   void check_plausible_units() const {
-    check_plausible_unit(physical_quantity::youngs_modulus, youngs_modulus, "--youngs-modulus", strict);
-    check_plausible_unit(physical_quantity::density, density, "--density", strict);
-    check_plausible_unit(physical_quantity::radius, radius, "--radius", strict);
-    check_plausible_unit(physical_quantity::speed, v0, "--v0", strict);
-    check_plausible_unit(physical_quantity::gravity, gravity, "--gravity", strict);
-    check_plausible_unit(physical_quantity::youngs_modulus, wall_youngs_modulus, "--wall-youngs-modulus", strict);
-    check_plausible_unit(physical_quantity::youngs_modulus, other_youngs_modulus, "--other-youngs-modulus", strict);
-    check_plausible_unit(physical_quantity::density, other_density, "--other-density", strict);
-    check_plausible_unit(physical_quantity::radius, other_radius, "--other-radius", strict);
+    check_plausible_unit(physical_quantity::youngs_modulus, youngs_modulus, VISCOR_FIELD("youngs_modulus"), strict);
+    check_plausible_unit(physical_quantity::density, density, VISCOR_FIELD("density"), strict);
+    check_plausible_unit(physical_quantity::radius, radius, VISCOR_FIELD("radius"), strict);
+    check_plausible_unit(physical_quantity::speed, v0, VISCOR_FIELD("v0"), strict);
+    check_plausible_unit(physical_quantity::gravity, gravity, VISCOR_FIELD("gravity"), strict);
+    check_plausible_unit(physical_quantity::youngs_modulus, wall_youngs_modulus, VISCOR_FIELD("wall_youngs_modulus"), strict);
+    check_plausible_unit(physical_quantity::youngs_modulus, other_youngs_modulus, VISCOR_FIELD("other_youngs_modulus"), strict);
+    check_plausible_unit(physical_quantity::density, other_density, VISCOR_FIELD("other_density"), strict);
+    check_plausible_unit(physical_quantity::radius, other_radius, VISCOR_FIELD("other_radius"), strict);
   }
 
   /// The contact and its partner: "wall" or "pair", partner inputs complete and fitting the contact.
   void check_partner(const std::string& command) const {
     if (contact && *contact != "wall" && *contact != "pair")
-      throw invalid_parameter("--contact must be wall or pair, got '" + *contact + "'");
+      throw invalid_parameter(VISCOR_FIELD("contact") " must be wall or pair, got '" + *contact + "'");
     if ((is_pair() || has_partner()) && !has_material())
       throw invalid_parameter(command + ": a wall material or a second bead needs the bead as a material "
-                                        "(--youngs-modulus, --poisson-ratio, --radius), not --k");
+                                        "(" VISCOR_FIELD("youngs_modulus") ", " VISCOR_FIELD("poisson_ratio") ", " VISCOR_FIELD("radius") "), not " VISCOR_FIELD("k"));
     const bool wall_given = wall_youngs_modulus || wall_poisson_ratio;
     const bool other_given = other_youngs_modulus || other_poisson_ratio || other_radius || other_density;
     if (wall_given && is_pair())
-      throw invalid_parameter(command + ": --wall-youngs-modulus and --wall-poisson-ratio describe a wall, not "
-                                        "--contact pair");
+      throw invalid_parameter(command + ": " VISCOR_FIELD("wall_youngs_modulus") " and " VISCOR_FIELD("wall_poisson_ratio") " describe a wall, not "
+                                        VISCOR_FIELD("contact") " pair");
     if (other_given && !is_pair())
-      throw invalid_parameter(command + ": --other-youngs-modulus, --other-poisson-ratio, --other-radius and "
-                                        "--other-density describe the second bead of --contact pair");
+      throw invalid_parameter(command + ": " VISCOR_FIELD("other_youngs_modulus") ", " VISCOR_FIELD("other_poisson_ratio") ", " VISCOR_FIELD("other_radius") " and "
+                                        VISCOR_FIELD("other_density") " describe the second bead of " VISCOR_FIELD("contact") " pair");
     if (wall_given && (!wall_youngs_modulus || !wall_poisson_ratio))
-      throw invalid_parameter(command + ": a wall of its own material needs --wall-youngs-modulus and "
-                                        "--wall-poisson-ratio (neither: a rigid wall)");
+      throw invalid_parameter(command + ": a wall of its own material needs " VISCOR_FIELD("wall_youngs_modulus") " and "
+                                        VISCOR_FIELD("wall_poisson_ratio") " (neither: a rigid wall)");
     if (other_given && (!other_youngs_modulus || !other_poisson_ratio || !other_radius || !other_density))
-      throw invalid_parameter(command + ": the other bead needs --other-youngs-modulus, --other-poisson-ratio, "
-                                        "--other-radius and --other-density (none: a bead like the first)");
+      throw invalid_parameter(command + ": the other bead needs " VISCOR_FIELD("other_youngs_modulus") ", " VISCOR_FIELD("other_poisson_ratio") ", "
+                                        VISCOR_FIELD("other_radius") " and " VISCOR_FIELD("other_density") " (none: a bead like the first)");
   }
 
   /// The wall's material or the other bead at the working precision (call check() first).
@@ -277,9 +292,9 @@ struct physical_inputs {
  private:
   std::string missing_material() const {
     std::vector<std::string> missing;
-    if (!youngs_modulus) missing.push_back("--youngs-modulus");
-    if (!poisson_ratio) missing.push_back("--poisson-ratio");
-    if (!radius) missing.push_back("--radius");
+    if (!youngs_modulus) missing.push_back(VISCOR_FIELD("youngs_modulus"));
+    if (!poisson_ratio) missing.push_back(VISCOR_FIELD("poisson_ratio"));
+    if (!radius) missing.push_back(VISCOR_FIELD("radius"));
     std::string s;
     for (const auto& x : missing) s += (s.empty() ? "" : ", ") + x;
     return s;

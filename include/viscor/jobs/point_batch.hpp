@@ -165,7 +165,7 @@ inline std::size_t solve_points(std::istream& in, const std::string& name, const
     if (const std::size_t bad = first_invalid_utf8(line); bad != std::string::npos) {
       char hex[8];
       std::snprintf(hex, sizeof hex, "0x%02X", static_cast<unsigned>(static_cast<unsigned char>(line[bad])));
-      throw invalid_parameter("--points: " + name + ":" + std::to_string(line_number) + ": not UTF-8 text (byte " +
+      throw invalid_parameter(VISCOR_FIELD("points") ": " + name + ":" + std::to_string(line_number) + ": not UTF-8 text (byte " +
                               hex + " at column " + std::to_string(bad + 1) + ")");
     }
     if (line.find_first_not_of(" \t\r") == std::string::npos || line[line.find_first_not_of(" \t")] == '#') continue;
@@ -178,10 +178,10 @@ inline std::size_t solve_points(std::istream& in, const std::string& name, const
         for (std::size_t c = 0; c < header.size(); ++c) {
           const std::string& column = header[c];
           if (!detail::point_field(probe, column))
-            throw invalid_parameter("--points: " + name + ":" + std::to_string(line_number) + ": unknown column '" +
+            throw invalid_parameter(VISCOR_FIELD("points") ": " + name + ":" + std::to_string(line_number) + ": unknown column '" +
                                     column + "' (known: " + detail::point_fields + ")");
           if (std::find(header.begin(), header.begin() + static_cast<long>(c), column) != header.begin() + static_cast<long>(c))
-            throw invalid_parameter("--points: " + name + ":" + std::to_string(line_number) + ": column '" + column +
+            throw invalid_parameter(VISCOR_FIELD("points") ": " + name + ":" + std::to_string(line_number) + ": column '" + column +
                                     "' given twice");
         }
         continue;
@@ -210,7 +210,7 @@ inline std::size_t solve_points(std::istream& in, const std::string& name, const
     if (batch.size() >= batch_size) flush();
   }
   flush();
-  if (line_number == 0) throw invalid_parameter("--points: " + name + " holds no points");
+  if (line_number == 0) throw invalid_parameter(VISCOR_FIELD("points") ": " + name + " holds no points");
   return refused_count;
 }
 
@@ -220,7 +220,7 @@ inline std::size_t solve_points(const std::string& path, const point_options& o,
   std::ifstream file;
   if (path != "-") {
     file.open(path);
-    if (!file) throw invalid_parameter("--points: cannot read '" + path + "'");
+    if (!file) throw invalid_parameter(VISCOR_FIELD("points") ": cannot read '" + path + "'");
   }
   const std::string name = path == "-" ? std::string("<stdin>") : path;
   const std::size_t refused = solve_points(path == "-" ? std::cin : file, name, o, [&](const json& result) {

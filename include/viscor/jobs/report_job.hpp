@@ -61,13 +61,13 @@ namespace fs = std::filesystem;
 /// The committed CoR tables of a directory (cor_*.csv), sorted by name.
 inline std::vector<std::string> cor_tables(const std::string& dir) {
   std::vector<std::string> out;
-  if (!fs::is_directory(dir)) throw invalid_parameter("--data: '" + dir + "' is not a directory");
+  if (!fs::is_directory(dir)) throw invalid_parameter(VISCOR_FIELD("data") ": '" + dir + "' is not a directory");
   for (const auto& entry : fs::directory_iterator(dir)) {
     const std::string name = entry.path().filename().string();
     if (name.rfind("cor_", 0) == 0 && entry.path().extension() == ".csv") out.push_back(entry.path().string());
   }
   if (out.empty())
-    throw invalid_parameter("--data: '" + dir + "' holds no certified CoR tables (cor_*.csv); nothing to report");
+    throw invalid_parameter(VISCOR_FIELD("data") ": '" + dir + "' holds no certified CoR tables (cor_*.csv); nothing to report");
   std::sort(out.begin(), out.end());
   return out;
 }

@@ -105,7 +105,7 @@ inline scene_result run_scene_file(const scene_file& file, const std::string& pa
   } catch (const invalid_parameter& e) {
     throw parse_error(file.locate("tolerance") + e.what());
   }
-  std::string dir = error_maps, from = "--error-maps";
+  std::string dir = error_maps, from = VISCOR_FIELD("error_maps");
   if (dir.empty()) dir = file.error_maps, from = file.locate("error_maps") + "field error_maps";
   if (dir.empty())
     if (const char* env = std::getenv("VISCOR_ERROR_MAPS"); env && *env) dir = env, from = "VISCOR_ERROR_MAPS";

@@ -296,7 +296,7 @@ inline bool build_surrogate(const surrogate_build_request& q) {
   if (q.spec_path.empty()) throw invalid_parameter("surrogate build needs a spec: viscor surrogate build SPEC.json -o FILE");
   if (output.empty()) throw invalid_parameter("surrogate build needs an output file: -o FILE");
   if (q.threads < 1 || q.threads > 4096)
-    throw invalid_parameter("--threads must be from 1 to 4096, got " + std::to_string(q.threads));
+    throw invalid_parameter(VISCOR_FIELD("threads") " must be from 1 to 4096, got " + std::to_string(q.threads));
   const shard part = q.shard.empty() ? shard{} : shard::parse(q.shard);
   const surrogate_spec spec = read_surrogate_spec(q.spec_path);
   const say_function say = [&](const std::string& m) {
@@ -307,7 +307,7 @@ inline bool build_surrogate(const surrogate_build_request& q) {
   if (!part.whole()) {
     say("shard " + part.to_string() + " of the verification table is in '" + table + "'. When every shard is done: "
         "viscor table merge " + output + ".verification.shard-*.csv -o " + output + ".verification.csv, then run "
-        "this build again with --resume to verify and write '" + output + "'");
+        "this build again with " VISCOR_FIELD("resume") " to verify and write '" + output + "'");
     return false;
   }
   const json stats = state_bounds(s, spec, read_verification_rows(table), output, table);

@@ -116,7 +116,7 @@ inline json method_provenance(const table_spec& table) {
 inline void check_run_options(const table_run_options& run, const std::string& command) {
   if (run.output.empty()) throw invalid_parameter(command + " needs an output file: -o OUT.csv");
   if (run.threads < 1 || run.threads > 4096)
-    throw invalid_parameter("--threads must be from 1 to 4096, got " + std::to_string(run.threads));
+    throw invalid_parameter(VISCOR_FIELD("threads") " must be from 1 to 4096, got " + std::to_string(run.threads));
 }
 
 /// The job of a table: everything but the rows and how to compute them.
@@ -259,7 +259,7 @@ inline std::size_t merge_tables(const std::vector<std::string>& input_paths, con
   std::vector<input> inputs;
   for (const auto& path : input_paths) {
     if (std::filesystem::exists(path + ".partial"))
-      throw error("'" + path + "' is unfinished ('" + path + ".partial' exists): complete it with --resume first");
+      throw error("'" + path + "' is unfinished ('" + path + ".partial' exists): complete it with " VISCOR_FIELD("resume") " first");
     const table_format format = table_format::of_file(path);
     input in{path, format, format.read(path), json()};
     if (!std::filesystem::exists(path + ".json"))

@@ -240,7 +240,7 @@ struct table_interrupted : error {
   /// rows_done of rows_total rows are kept in partial_file; the message is the CLI's.
   table_interrupted(std::size_t rows_done, std::size_t rows_total, std::string partial_file)
       : error("interrupted: " + std::to_string(rows_done) + " of " + std::to_string(rows_total) +
-              " rows are done and kept in '" + partial_file + "'; rerun the same command with --resume to continue"),
+              " rows are done and kept in '" + partial_file + "'; rerun the same command with " VISCOR_FIELD("resume") " to continue"),
         done(rows_done),
         total(rows_total),
         partial(std::move(partial_file)) {}
@@ -273,7 +273,7 @@ inline table_run_summary run_table_job(const table_job& job) {
   json meta;
   const bool have_partial = std::filesystem::exists(partial);
   if (have_partial && !job.resume)
-    throw error("'" + partial + "' exists: an interrupted run of this table. Add --resume to continue it, or "
+    throw error("'" + partial + "' exists: an interrupted run of this table. Add " VISCOR_FIELD("resume") " to continue it, or "
                 "delete it (and '" + partial_meta + "') to start afresh");
   if (have_partial) {
     if (!std::filesystem::exists(partial_meta))
@@ -388,7 +388,7 @@ inline table_run_summary run_table_job(const table_job& job) {
         try {
           std::rethrow_exception(run.failure);
         } catch (const error& e) {
-          throw error(std::string(e.what()) + "\n  " + kept + "; fix the cause and rerun with --resume");
+          throw error(e.marked() + "\n  " + kept + "; fix the cause and rerun with " VISCOR_FIELD("resume"));
         } catch (const std::exception& e) {
           throw error(std::string("internal error: ") + e.what() + "\n  " + kept);
         }

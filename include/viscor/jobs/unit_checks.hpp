@@ -1,14 +1,14 @@
 // Unit mistakes caught before any work: a physical input far outside the plausible
-// range of its quantity (core/plausible_units.hpp) is warned about on standard
-// error, or refused when strict. Used by the command-line options and scene files.
+// range of its quantity (core/plausible_units.hpp) is warned about (core/warnings.hpp),
+// or refused when strict. Used by the command-line options and scene files.
 #pragma once
 
 #include <viscor/core/exceptions.hpp>
 #include <viscor/core/plausible_units.hpp>
+#include <viscor/core/warnings.hpp>
 #include <viscor/scenes/scene.hpp>
 
 #include <cstdlib>
-#include <iostream>
 #include <optional>
 #include <string>
 
@@ -22,8 +22,8 @@ inline void check_plausible_unit(physical_quantity q, const std::optional<std::s
   const double value = std::strtod(text->c_str(), nullptr);  // a coarse check; the exact parse comes later
   const std::optional<std::string> message = implausible_unit(q, value, option, *text);
   if (!message) return;
-  if (strict) throw invalid_parameter(*message + " (refused under --strict)");
-  std::cerr << "viscor: warning: " << *message << " (--strict makes this an error)\n";
+  if (strict) throw invalid_parameter(*message + " (refused under " VISCOR_FIELD("strict") ")");
+  warn(*message + " (" VISCOR_FIELD("strict") " makes this an error)");
 }
 
 /// The same checks for a scene file's bead, wall and load; `where` names the field's line.

@@ -110,7 +110,7 @@ calibration_result<Real> calibrate_gamma(const contact_law& law, const Real& g, 
   if (tol < 100 * epsilon<Real>())
     throw precision_unavailable("calibration tolerance " + to_decimal_string(tol, 3) + " is below what " +
                                 std::to_string(decimal_digits<Real>()) +
-                                " digits resolve (>= 100 epsilon); use a wider type or --digits");
+                                " digits resolve (>= 100 epsilon); use a wider type or " VISCOR_FIELD("digits"));
 
   calibration_result<Real> r;
   r.g = g;

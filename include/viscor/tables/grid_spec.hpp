@@ -265,10 +265,10 @@ struct shard {
       return !s.empty() && s.size() <= 9 && s.find_first_not_of("0123456789") == std::string::npos;
     };
     if (slash == std::string::npos || !is_count(text.substr(0, slash)) || !is_count(text.substr(slash + 1)))
-      throw invalid_parameter("--shard must be i/N with integers 0 <= i < N, got '" + text + "'");
+      throw invalid_parameter(VISCOR_FIELD("shard") " must be i/N with integers 0 <= i < N, got '" + text + "'");
     shard s{std::stoll(text.substr(0, slash)), std::stoll(text.substr(slash + 1))};
     if (s.count < 1 || s.index >= s.count)
-      throw invalid_parameter("--shard must be i/N with integers 0 <= i < N, got '" + text + "'");
+      throw invalid_parameter(VISCOR_FIELD("shard") " must be i/N with integers 0 <= i < N, got '" + text + "'");
     return s;
   }
 };
