@@ -33,6 +33,16 @@ class BadInputRaises(unittest.TestCase):
         self.check(viscor.InvalidParameter, ["gamma", "NaN"], viscor.cor, "tsuji", decimal.Decimal("NaN"), 0)
         self.check(viscor.InvalidParameter, ["gamma", "'nan'"], viscor.cor, "tsuji", "nan", 0)
 
+    def test_messages_name_python_keywords(self):
+        # The library names fields; Python shows them as its keywords, never as the CLI's options.
+        e = self.check(viscor.InvalidParameter, ["dem needs youngs_modulus (Pa)"], viscor.dem, "lammps",
+                       damping="tsuji", poisson_ratio="0.3", radius="1e-3", density="2500", gravity="9.81",
+                       target_e="0.8", v0="0.5")
+        self.assertNotIn("--", str(e))
+        e = self.check(viscor.InvalidParameter, ["gravity", "never defaults"], viscor.evaluate, "tsuji", m=1e-3,
+                       k=1e9, v0=0.5, gamma0=1e-3)
+        self.assertNotIn("--", str(e))
+
     def test_committed_data_is_not_replaced(self):
         # A table whose name a SHA256SUMS beside it lists is committed data: refused before
         # any work, the file and the manifest untouched (the CLI asks with --update-committed).
