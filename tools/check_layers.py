@@ -66,7 +66,7 @@ FORBIDDEN_PAIRS = [
 # The jobs' typed API: a request in, a result of numbers and types out. Text and JSON
 # are made by the render headers (jobs/*_render.hpp), so these never mention them.
 # (The formula, scene, table, report and error-map jobs still write JSON themselves.)
-JOB_API = re.compile(r"^jobs/((cor|exact|approx|scale|calibrate|dem|speaks_json)_job|\w+_result|precision_used)\.hpp$")
+JOB_API = re.compile(r"^jobs/((cor|exact|approx|scale|calibrate|dem|bench|speaks_json)_job|\w+_result|precision_used)\.hpp$")
 JOB_API_FORBIDDEN = re.compile(r"\bjson\b|command_output|nlohmann")
 TOP_LEVEL_OK = {"viscor.hpp", "config.hpp.in"}
 INCLUDE = re.compile(r'^\s*#\s*include\s*[<"]viscor/([^>"]+)[>"]', re.M)

@@ -85,6 +85,8 @@
 #include <viscor/jobs/surrogate_files.hpp>
 #include <viscor/jobs/table_jobs.hpp>
 #include <viscor/jobs/approx_render.hpp>
+#include <viscor/jobs/bench_job.hpp>
+#include <viscor/jobs/bench_render.hpp>
 #include <viscor/jobs/calibrate_render.hpp>
 #include <viscor/jobs/cor_render.hpp>
 #include <viscor/jobs/dem_render.hpp>
