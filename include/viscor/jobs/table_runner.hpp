@@ -249,28 +249,44 @@ struct table_interrupted : error {
   std::string partial;  ///< the file that keeps them
 };
 
-/// Runs the job; throws viscor::error on failure, table_interrupted on interruption
-/// (the partial file is then kept for --resume).
-inline table_run_summary run_table_job(const table_job& job) {
-  using namespace std::chrono;
-  const std::string partial = job.output + ".partial", partial_meta = job.output + ".partial.json";
-  const auto wall_start = steady_clock::now();
-  const std::time_t started = std::time(nullptr);
-  const std::set<std::int64_t> wanted(job.indices.begin(), job.indices.end());
-  const json fingerprint = table_fingerprint(job.provenance);
-  const table_format format{job.kind, job.proven};
-  // Before any work: every file this run writes must be a regular file or absent, and
-  // no other run may be writing them.
-  for (const std::string& path : {job.output, job.output + ".json", partial, partial_meta}) {
-    refuse_unless_regular_or_absent(path);
-    refuse_committed_unless_allowed(path);  // before hours of work, not at the end
-  }
-  const output_lock lock(job.output);
+namespace detail {
 
-  // Rows already done by an interrupted run.
+/// The files of one run: the table and its sidecar, and while it runs the partial
+/// table and what it is computing (for resume).
+struct run_files {
+  explicit run_files(const std::string& output)
+      : table(output), sidecar(output + ".json"), partial(output + ".partial"), partial_meta(output + ".partial.json") {}
+  std::string table, sidecar, partial, partial_meta;
+};
+
+/// Before any work: every file the run writes is a regular file or absent, and none
+/// is committed data (refused before hours of work, not at the end).
+inline void check_run_files(const run_files& files) {
+  for (const std::string& path : {files.table, files.sidecar, files.partial, files.partial_meta}) {
+    refuse_unless_regular_or_absent(path);
+    refuse_committed_unless_allowed(path);
+  }
+}
+
+/// What earlier sessions left: the rows done (kept in the partial table), the partial
+/// run's metadata, or a table that is already complete.
+struct earlier_sessions {
   std::set<std::int64_t> done;
-  std::vector<csv_record> earlier;
   json meta;
+  bool already_complete = false;
+};
+
+/// Reads back the rows of an interrupted run (resume: each row checked to be one of
+/// this run's, once, at its grid point), or starts the partial files afresh; a
+/// resume of a table that is complete does nothing.
+inline earlier_sessions resume_or_start(const table_job& job, const table_format& format, const json& fingerprint,
+                                        const run_files& files) {
+  const std::string& partial = files.partial;
+  const std::string& partial_meta = files.partial_meta;
+  const std::set<std::int64_t> wanted(job.indices.begin(), job.indices.end());
+  earlier_sessions earlier;
+  std::set<std::int64_t>& done = earlier.done;
+  json& meta = earlier.meta;
   const bool have_partial = std::filesystem::exists(partial);
   if (have_partial && !job.resume)
     throw error("'" + partial + "' exists: an interrupted run of this table. Add " VISCOR_FIELD("resume") " to continue it, or "
@@ -284,6 +300,7 @@ inline table_run_summary run_table_job(const table_job& job) {
                   "(see '" + partial_meta + "'); delete both files to start afresh");
     const csv_table table = format.read(partial, /*allow_truncated_tail=*/true);
     if (table.kind != job.kind) throw parse_error(partial + ":1: wrong columns for this kind of table");
+    std::vector<csv_record> rows;
     for (const auto& row : table.rows) {
       if (!wanted.count(row.index))
         throw parse_error(partial + ":" + std::to_string(row.line) + ": field index: row " +
@@ -300,113 +317,120 @@ inline table_run_summary run_table_job(const table_job& job) {
                             std::to_string(row.index) + " is (" + found + "), not the grid point (" + expected +
                             ") of this spec; delete the partial files to start afresh");
       }
-      earlier.push_back(row);
+      rows.push_back(row);
     }
     // Rewrite without a line cut short by a kill, so appends start on a fresh line.
     std::string clean = format.header() + "\n";
-    for (const auto& row : earlier) clean += row.text + "\n";
+    for (const auto& row : rows) clean += row.text + "\n";
     write_atomically(partial, clean);
     if (!job.quiet)
       std::cerr << "viscor table: resuming: " << done.size() << " of " << job.indices.size()
                 << " rows already done" << (table.truncated_tail ? " (dropped one row cut short)" : "") << '\n';
-  } else {
-    // --resume of a run that already finished (a resubmitted batch job): nothing to do.
-    if (job.resume && std::filesystem::exists(job.output) && std::filesystem::exists(job.output + ".json")) {
-      bool complete = false;
-      try {
-        complete = table_fingerprint(read_json_file(job.output + ".json")) == fingerprint &&
-                   format.read(job.output).rows.size() == job.indices.size();
-      } catch (const error&) {
-        complete = false;  // unreadable: compute it again
-      }
-      if (complete) {
-        if (!job.quiet) std::cerr << "viscor table: '" << job.output << "' is already complete; nothing to do\n";
-        table_run_summary summary;
-        summary.rows = job.indices.size();
-        summary.already_complete = true;
-        return summary;
-      }
-    }
-    if (job.resume && !job.quiet) std::cerr << "viscor table: nothing to resume; computing every row\n";
-    meta["fingerprint"] = fingerprint;
-    meta["note"] = "an interrupted viscor table run: rerun the same command with --resume";
-    write_together({{partial_meta, meta.dump(2) + "\n"}, {partial, format.header() + "\n"}});
+    return earlier;
   }
-  const double earlier_wall = meta.value("wall_time_seconds", 0.0);
-  const int earlier_sessions = meta.value("sessions", 0);
+  // --resume of a run that already finished (a resubmitted batch job): nothing to do.
+  if (job.resume && std::filesystem::exists(files.table) && std::filesystem::exists(files.sidecar)) {
+    bool complete = false;
+    try {
+      complete = table_fingerprint(read_json_file(files.sidecar)) == fingerprint &&
+                 format.read(files.table).rows.size() == job.indices.size();
+    } catch (const error&) {
+      complete = false;  // unreadable: compute it again
+    }
+    if (complete) {
+      if (!job.quiet) std::cerr << "viscor table: '" << files.table << "' is already complete; nothing to do\n";
+      earlier.already_complete = true;
+      return earlier;
+    }
+  }
+  if (job.resume && !job.quiet) std::cerr << "viscor table: nothing to resume; computing every row\n";
+  meta["fingerprint"] = fingerprint;
+  meta["note"] = "an interrupted viscor table run: rerun the same command with --resume";
+  write_together({{partial_meta, meta.dump(2) + "\n"}, {partial, format.header() + "\n"}});
+  return earlier;
+}
 
+/// Computes the rows not done yet on the job's threads, appending each to the partial
+/// table as it is finished, with progress, Ctrl-C/SIGTERM and should_stop polled.
+/// On a failure or an interruption it saves the session's time in the partial
+/// metadata and throws (table_interrupted when stopped), the rows done kept.
+inline void compute_pending_rows(const table_job& job, const earlier_sessions& earlier, const run_files& files,
+                                 std::chrono::steady_clock::time_point wall_start) {
+  const std::set<std::int64_t>& done = earlier.done;
   std::vector<std::size_t> pending;  // positions in job.indices
   for (std::size_t i = 0; i < job.indices.size(); ++i)
     if (!done.count(job.indices[i])) pending.push_back(i);
 
   const long long stop_after = job.stop_after_rows;
-
-  {
-    detail::interrupts = 0;
-    std::optional<detail::interrupt_guard> guard;
-    if (job.handle_signals) guard.emplace();
-    std::atomic<bool> stop_requested{false};  // by should_stop, or by the test seam without signals
-    detail::line_appender out(partial);
-    detail::progress_meter progress(job.indices.size(), done.size(), job.quiet);
-    std::mutex mutex;  // guards out and finished
-    std::size_t finished = 0;
-    parallel_for_options options;
-    options.threads = static_cast<unsigned>(std::max(1, job.threads));
-    options.keep_going = [&] { return !stop_requested && detail::interrupts == 0; };
-    options.poll = [&] {
-      {
+  detail::interrupts = 0;
+  std::optional<detail::interrupt_guard> guard;
+  if (job.handle_signals) guard.emplace();
+  std::atomic<bool> stop_requested{false};  // by should_stop, or by the test seam without signals
+  detail::line_appender out(files.partial);
+  detail::progress_meter progress(job.indices.size(), done.size(), job.quiet);
+  std::mutex mutex;  // guards out and finished
+  std::size_t finished = 0;
+  parallel_for_options options;
+  options.threads = static_cast<unsigned>(std::max(1, job.threads));
+  options.keep_going = [&] { return !stop_requested && detail::interrupts == 0; };
+  options.poll = [&] {
+    {
+      std::lock_guard lock(mutex);
+      progress.update(finished);
+    }
+    if (job.should_stop && !stop_requested && job.should_stop()) stop_requested = true;
+    return !stop_requested && detail::interrupts == 0;
+  };
+  const parallel_for_result run = parallel_for(
+      pending.size(),
+      [&](std::size_t k) {
+        const std::string line = job.compute_line(pending[k]);
         std::lock_guard lock(mutex);
-        progress.update(finished);
-      }
-      if (job.should_stop && !stop_requested && job.should_stop()) stop_requested = true;
-      return !stop_requested && detail::interrupts == 0;
-    };
-    const parallel_for_result run = parallel_for(
-        pending.size(),
-        [&](std::size_t k) {
-          const std::string line = job.compute_line(pending[k]);
-          std::lock_guard lock(mutex);
-          out.append(line);
-          ++finished;
-          if (stop_after >= 0 && static_cast<long long>(finished) == stop_after) {
-            if (job.handle_signals) std::raise(SIGINT);  // exactly what a Ctrl-C does
-            else stop_requested = true;
-          }
-        },
-        options);
-    progress.update(finished, /*final=*/true);
-
-    const double wall = duration<double>(steady_clock::now() - wall_start).count();
-    const bool interrupted = detail::interrupts > 0 || stop_requested;
-    if (run.failed() || interrupted) {
-      meta["wall_time_seconds"] = earlier_wall + wall;
-      meta["sessions"] = earlier_sessions + 1;
-      write_atomically(partial_meta, meta.dump(2) + "\n");
-      const std::string kept = std::to_string(done.size() + finished) + " of " +
-                               std::to_string(job.indices.size()) + " rows are done and kept in '" + partial + "'";
-      if (run.failed()) {
-        try {
-          std::rethrow_exception(run.failure);
-        } catch (const error& e) {
-          throw error(e.marked() + "\n  " + kept + "; fix the cause and rerun with " VISCOR_FIELD("resume"));
-        } catch (const std::exception& e) {
-          throw error(std::string("internal error: ") + e.what() + "\n  " + kept);
+        out.append(line);
+        ++finished;
+        if (stop_after >= 0 && static_cast<long long>(finished) == stop_after) {
+          if (job.handle_signals) std::raise(SIGINT);  // exactly what a Ctrl-C does
+          else stop_requested = true;
         }
-      }
-      throw table_interrupted(done.size() + finished, job.indices.size(), partial);
+      },
+      options);
+  progress.update(finished, /*final=*/true);
+
+  const bool interrupted = detail::interrupts > 0 || stop_requested;
+  if (!run.failed() && !interrupted) return;
+  json meta = earlier.meta;
+  meta["wall_time_seconds"] = meta.value("wall_time_seconds", 0.0) +
+                              std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  meta["sessions"] = meta.value("sessions", 0) + 1;
+  write_atomically(files.partial_meta, meta.dump(2) + "\n");
+  const std::string kept = std::to_string(done.size() + finished) + " of " + std::to_string(job.indices.size()) +
+                           " rows are done and kept in '" + files.partial + "'";
+  if (run.failed()) {
+    try {
+      std::rethrow_exception(run.failure);
+    } catch (const error& e) {
+      throw error(e.marked() + "\n  " + kept + "; fix the cause and rerun with " VISCOR_FIELD("resume"));
+    } catch (const std::exception& e) {
+      throw error(std::string("internal error: ") + e.what() + "\n  " + kept);
     }
   }
+  throw table_interrupted(done.size() + finished, job.indices.size(), files.partial);
+}
 
-  // All rows done: sort into grid order and publish CSV, then sidecar.
-  const csv_table table = format.read(partial);
-  const std::string text = format.text(table.rows, partial);
+/// Every row done: sorts them into grid order and publishes the table and its sidecar
+/// together, then removes the partial files.
+inline table_run_summary publish_table(const table_job& job, const table_format& format,
+                                       const earlier_sessions& earlier, const run_files& files, std::time_t started,
+                                       std::chrono::steady_clock::time_point wall_start) {
+  const csv_table table = format.read(files.partial);
+  const std::string text = format.text(table.rows, files.partial);
   if (table.rows.size() != job.indices.size())
-    throw error("internal error: '" + partial + "' holds " + std::to_string(table.rows.size()) + " rows, expected " +
-                std::to_string(job.indices.size()));
+    throw error("internal error: '" + files.partial + "' holds " + std::to_string(table.rows.size()) +
+                " rows, expected " + std::to_string(job.indices.size()));
   std::size_t exact_rows = 0, certified_rows = 0;
   for (const auto& row : table.rows) (row.fields[format.method_column()] == "exact" ? exact_rows : certified_rows)++;
 
-  const double wall = duration<double>(steady_clock::now() - wall_start).count();
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   json sidecar;
   sidecar["table"] = std::filesystem::path(job.output).filename().string();
   for (auto it = job.provenance.begin(); it != job.provenance.end(); ++it) sidecar[it.key()] = it.value();
@@ -417,21 +441,44 @@ inline table_run_summary run_table_job(const table_job& job) {
   sidecar["host"] = host_name();
   sidecar["date"] = iso_time_utc(started);
   sidecar["threads"] = job.threads;
-  sidecar["wall_time_seconds"] = earlier_wall + wall;
-  sidecar["sessions"] = earlier_sessions + 1;
-  sidecar["rows_from_earlier_sessions"] = done.size();
+  sidecar["wall_time_seconds"] = earlier.meta.value("wall_time_seconds", 0.0) + wall;
+  sidecar["sessions"] = earlier.meta.value("sessions", 0) + 1;
+  sidecar["rows_from_earlier_sessions"] = earlier.done.size();
 
-  write_together({{job.output, text}, {job.output + ".json", sidecar.dump(2) + "\n"}});
-  detail::remove_file(partial);
-  detail::remove_file(partial_meta);
+  write_together({{files.table, text}, {files.sidecar, sidecar.dump(2) + "\n"}});
+  detail::remove_file(files.partial);
+  detail::remove_file(files.partial_meta);
   if (!job.quiet)
     std::cerr << "viscor table: wrote " << job.output << " (" << table.rows.size() << " rows) and " << job.output
               << ".json in " << std::fixed << std::setprecision(2) << wall << " s\n";
   table_run_summary summary;
   summary.rows = table.rows.size();
-  summary.rows_from_earlier_sessions = done.size();
+  summary.rows_from_earlier_sessions = earlier.done.size();
   summary.wall_time_seconds = wall;
   return summary;
+}
+
+}  // namespace detail
+
+/// Runs the job in its named steps: check the files, take the lock, resume or start,
+/// compute the rows left, publish. Throws viscor::error on failure and
+/// table_interrupted on interruption (the partial file is then kept for resume).
+inline table_run_summary run_table_job(const table_job& job) {
+  const auto wall_start = std::chrono::steady_clock::now();
+  const std::time_t started = std::time(nullptr);
+  const table_format format{job.kind, job.proven};
+  const detail::run_files files(job.output);
+  detail::check_run_files(files);
+  const output_lock lock(job.output);  // no other run may be writing these files
+  const detail::earlier_sessions earlier = detail::resume_or_start(job, format, table_fingerprint(job.provenance), files);
+  if (earlier.already_complete) {
+    table_run_summary summary;
+    summary.rows = job.indices.size();
+    summary.already_complete = true;
+    return summary;
+  }
+  detail::compute_pending_rows(job, earlier, files, wall_start);
+  return detail::publish_table(job, format, earlier, files, started, wall_start);
 }
 
 }  // namespace viscor::jobs
