@@ -32,15 +32,20 @@ class working_number {
 
   /// The nearest double (what arithmetic in C++ or Python sees).
   double value() const { return m_value; }
+  /// The nearest double, where a double is wanted (result.e * 2).
   operator double() const { return m_value; }  // NOLINT(google-explicit-constructor)
 
   /// The decimal text of the value in its own type: `digits` significant digits,
   /// 0 for the digits that round-trip (to_decimal_string, real_io.hpp).
   std::string decimal(int digits = 0) const { return m_held->decimal(digits); }
 
+  /// Exactly zero in its own type (a double would also call 1e-400 zero).
   bool is_zero() const { return m_held->is_zero(); }
+  /// Neither infinite nor NaN, in its own type.
   bool is_finite() const { return m_held->is_finite(); }
+  /// +infinity or -infinity (a contact time that never ends).
   bool is_infinite() const { return !is_finite() && !is_nan(); }
+  /// Not a number (an unknown quantity).
   bool is_nan() const { return m_held->is_nan(); }
 
   /// The value in its own type, or nullptr when it has another one.

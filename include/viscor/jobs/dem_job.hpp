@@ -94,6 +94,7 @@ struct dem_reverse_row {
   working_number e;
   impact_outcome outcome = impact_outcome::rebound;
 };
+/// Reverse: the deck entry and the e it gives at each speed and load.
 struct dem_reverse {
   std::string deck_en;       ///< YADE's en, when given instead of the damping
   std::string deck_damping;  ///< the deck's damping entry (converted from en when en was given)

@@ -81,6 +81,7 @@ inline json surrogate_bound_json(const surrogate::surrogate_bound& b) {
           {"rel_one_minus_e_applies", "where gamma <= 1e-2 and e >= 1e-2"},
           {"outcome", "correct except within relative 1e-10 in g of the sticking threshold"}};
 }
+/// error_bound of a surrogate: the bound it states (surrogate_bound_json of its bound).
 inline json surrogate_bound_json(const surrogate::cor_surrogate& s) { return surrogate_bound_json(s.bound); }
 
 }  // namespace viscor::jobs
