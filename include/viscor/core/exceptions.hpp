@@ -46,6 +46,7 @@ inline std::string plain_fields(std::string_view text) {
 /// Base of every error viscor throws. what() names fields by their names; spelled()
 /// lets a front end spell them (the CLI: as its options).
 struct error : std::runtime_error {
+  /// `message` names fields with VISCOR_FIELD or field_ref; what() shows their names.
   explicit error(const std::string& message)
       : std::runtime_error(detail::plain_fields(message)), m_marked(std::make_shared<const std::string>(message)) {}
   /// The message with each field written as spell(name).
