@@ -45,7 +45,8 @@ hertz_contact<Real> model_contact(const dem_model& model, const dem_impact<Real>
   if (!takes_linear_stiffness(model)) return make_hertz_contact(impact.bead, impact.kind, impact.partner);
   if (impact.partner.wall || impact.partner.other)
     throw invalid_parameter(std::string(model.code_name) + " " + std::string(model.damping_name) + " is a linear "
-                            "spring of the contact's stiffness " VISCOR_FIELD("k") ": a wall material or another bead does not enter it "
+                            "spring of the contact's stiffness " VISCOR_FIELD("k")
+                            ": a wall material or another bead does not enter it "
                             "(give the contact's kn as " VISCOR_FIELD("k") ")");
   require_positive(impact.stiffness, "k");
   require_positive(impact.bead.radius, "radius");

@@ -72,9 +72,11 @@ struct contact_partner {
   /// Throws invalid_parameter when a partner does not fit `kind` (the other bead on a wall, a wall in a pair).
   void validate(contact_kind kind) const {
     if (kind == contact_kind::wall && other)
-      throw invalid_parameter("the other bead (" VISCOR_FIELD("other_youngs_modulus") ", ...) belongs to " VISCOR_FIELD("contact") " pair, not to a wall");
+      throw invalid_parameter("the other bead (" VISCOR_FIELD("other_youngs_modulus") ", ...) belongs to "
+                              VISCOR_FIELD("contact") " pair, not to a wall");
     if (kind == contact_kind::pair && wall)
-      throw invalid_parameter("a wall material (" VISCOR_FIELD("wall_youngs_modulus") ", ...) belongs to " VISCOR_FIELD("contact") " wall, not to a pair");
+      throw invalid_parameter("a wall material (" VISCOR_FIELD("wall_youngs_modulus") ", ...) belongs to "
+                              VISCOR_FIELD("contact") " wall, not to a pair");
     if (wall) wall->validate("wall");
     if (other) other->validate("other_");
   }

@@ -119,7 +119,8 @@ std::pair<std::string, int> table_value(const csv_table& t, const std::string& f
     if (row.fields[col("alpha")] == law.alpha.to_string() && row.fields[col("beta")] == law.beta.to_string() &&
         row.fields[col("gamma")] == gamma && row.fields[col("g")] == g)
       return {row.fields[col(field::e)], std::stoi(row.fields[col(field::certified_digits_column)])};
-  throw invalid_parameter(VISCOR_FIELD("table") " " + file + " has no row for " + law.describe() + ", gamma = " + gamma +
+  throw invalid_parameter(VISCOR_FIELD("table")
+                          " " + file + " has no row for " + law.describe() + ", gamma = " + gamma +
                           ", g = " + g + " (the bench's point set)");
 }
 

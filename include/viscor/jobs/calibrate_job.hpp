@@ -61,11 +61,13 @@ namespace detail {
 inline calibrate_result calibrate_by_surrogate(const calibrate_request& q, bool is_physical) {
   const surrogate::cor_surrogate* s = find_surrogate(q.law);
   if (!s || !s->bound.verified())
-    throw invalid_parameter(VISCOR_FIELD("method") " surrogate: no surrogate for " + q.law.describe() + " (looked in '" +
+    throw invalid_parameter(VISCOR_FIELD("method")
+                            " surrogate: no surrogate for " + q.law.describe() + " (looked in '" +
                             surrogate_directory() + "'; docs/surrogate.md)");
   const double target = parse_real<double>(*q.target_e, "target_e");
   if (!(target >= 0.01 && target < 1))
-    throw invalid_parameter(VISCOR_FIELD("method") " surrogate: " VISCOR_FIELD("target_e") " must be in [0.01, 1), got " + *q.target_e);
+    throw invalid_parameter(VISCOR_FIELD("method") " surrogate: " VISCOR_FIELD("target_e")
+                            " must be in [0.01, 1), got " + *q.target_e);
   double g_value = 0, factor = 0, time_scale_s = 0;
   if (is_physical) {
     const physical_parameters<double> in = q.physical.parameters<double>(q.law);
@@ -77,13 +79,15 @@ inline calibrate_result calibrate_by_surrogate(const calibrate_request& q, bool 
     g_value = q.g ? parse_real<double>(*q.g, "g") : 0.0;
   }
   if (!(g_value >= s->g_min && g_value <= s->g_max))
-    throw invalid_parameter(VISCOR_FIELD("method") " surrogate: g = " + to_decimal_string(g_value) + " is outside the surrogate's domain (" +
+    throw invalid_parameter(VISCOR_FIELD("method")
+                            " surrogate: g = " + to_decimal_string(g_value) + " is outside the surrogate's domain (" +
                             to_decimal_string(s->g_min) + " <= g <= " + to_decimal_string(s->g_max) + ")");
   const auto start = std::chrono::steady_clock::now();
   const double gamma = s->gamma_for(target, g_value);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!(gamma == gamma))
-    throw invalid_parameter(VISCOR_FIELD("method") " surrogate: no gamma in [0, " + to_decimal_string(s->gamma_max) + "] gives e = " +
+    throw invalid_parameter(VISCOR_FIELD("method")
+                            " surrogate: no gamma in [0, " + to_decimal_string(s->gamma_max) + "] gives e = " +
                             *q.target_e + " at g = " + to_decimal_string(g_value) + " (the surrogate's domain)");
   calibrate_result out;
   out.law = q.law;
@@ -141,11 +145,13 @@ inline calibrate_result run_calibrate(calibrate_request q) {
   if (!q.target_e) throw invalid_parameter("calibrate needs " VISCOR_FIELD("target_e") ", the CoR to reproduce");
   const bool is_physical = q.physical.given();
   if (is_physical && q.g)
-    throw invalid_parameter("give either " VISCOR_FIELD("g") " (scaled) or the physical inputs (" + q.physical.given_names() +
+    throw invalid_parameter("give either " VISCOR_FIELD("g")
+                            " (scaled) or the physical inputs (" + q.physical.given_names() +
                             "), not both");
   if (is_physical) q.physical.check("calibrate");
   if (q.method == "surrogate") return detail::calibrate_by_surrogate(q, is_physical);
-  if (q.method != "solve") throw invalid_parameter(VISCOR_FIELD("method") " must be solve or surrogate, got '" + q.method + "'");
+  if (q.method != "solve") throw invalid_parameter(VISCOR_FIELD("method")
+                  " must be solve or surrogate, got '" + q.method + "'");
   return detail::calibrate_by_solving(q, is_physical);
 }
 

@@ -59,10 +59,12 @@ namespace detail {
 // --prove needs exact decimal inputs and rational exponents: checked before any work.
 inline void check_provable(const contact_law& law, bool is_physical) {
   if (is_physical)
-    throw invalid_parameter(VISCOR_FIELD("prove") " needs the scaled " VISCOR_FIELD("gamma") " and " VISCOR_FIELD("g") " (exact decimals), not physical inputs");
+    throw invalid_parameter(VISCOR_FIELD("prove") " needs the scaled " VISCOR_FIELD("gamma") " and "
+                            VISCOR_FIELD("g") " (exact decimals), not physical inputs");
   if (const std::string why = law.why_not_provable(); !why.empty()) throw invalid_parameter(why);
 #if !defined(VISCOR_WITH_ENCLOSE)
-  throw invalid_parameter(VISCOR_FIELD("prove") ": this viscor was built without Arb (apt-get install libflint-arb-dev)");
+  throw invalid_parameter(VISCOR_FIELD("prove")
+                          ": this viscor was built without Arb (apt-get install libflint-arb-dev)");
 #endif
 }
 
@@ -94,7 +96,9 @@ inline cor_result run_cor(cor_request q) {
     throw invalid_parameter("give either the physical inputs (" + q.physical.given_names() +
                             ") or the scaled " VISCOR_FIELD("gamma") "/" VISCOR_FIELD("g") ", not both");
   if (!is_physical && !q.gamma)
-    throw invalid_parameter("cor needs " VISCOR_FIELD("gamma") " (and optionally " VISCOR_FIELD("g") "), or the physical inputs " VISCOR_FIELD("m") " " VISCOR_FIELD("k") " " VISCOR_FIELD("gamma0") " " VISCOR_FIELD("v0") " "
+    throw invalid_parameter("cor needs " VISCOR_FIELD("gamma") " (and optionally " VISCOR_FIELD("g")
+                            "), or the physical inputs " VISCOR_FIELD("m") " " VISCOR_FIELD("k") " "
+                            VISCOR_FIELD("gamma0") " " VISCOR_FIELD("v0") " "
                             VISCOR_FIELD("gravity") " [" VISCOR_FIELD("force") "], or " VISCOR_FIELD("points") " FILE");
   if (is_physical) {
     q.physical.check("cor");

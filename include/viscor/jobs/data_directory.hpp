@@ -51,7 +51,8 @@ inline std::string data_directory(const std::string& given = "") {
   if (fs::is_directory(VISCOR_SOURCE_DATA_DIR)) return VISCOR_SOURCE_DATA_DIR;
   tried += std::string(tried.empty() ? "" : ", ") + VISCOR_SOURCE_DATA_DIR;
 #endif
-  throw invalid_parameter("no data directory found (tried " + tried + "): give " VISCOR_FIELD("data") " DIR or set VISCOR_DATA");
+  throw invalid_parameter("no data directory found (tried " + tried + "): give " VISCOR_FIELD("data")
+                          " DIR or set VISCOR_DATA");
 }
 
 /// The error maps directory: <data>/error_maps, or "" when there is none.

@@ -130,11 +130,14 @@ struct dem_job : dem_request {
     const bool other_given = !other_youngs_modulus.empty() || !other_poisson_ratio.empty() || !other_radius.empty() ||
                              !other_density.empty();
     if (wall_given && kind != dem::contact_kind::wall)
-      throw invalid_parameter(VISCOR_FIELD("wall_youngs_modulus") " and " VISCOR_FIELD("wall_poisson_ratio") " describe a wall: they need " VISCOR_FIELD("contact") " "
+      throw invalid_parameter(VISCOR_FIELD("wall_youngs_modulus") " and " VISCOR_FIELD("wall_poisson_ratio")
+                              " describe a wall: they need " VISCOR_FIELD("contact") " "
                               "wall, not " VISCOR_FIELD("contact") " " + contact);
     if (other_given && kind != dem::contact_kind::pair)
-      throw invalid_parameter(VISCOR_FIELD("other_youngs_modulus") ", " VISCOR_FIELD("other_poisson_ratio") ", " VISCOR_FIELD("other_radius") " and " VISCOR_FIELD("other_density") " "
-                              "describe the second bead of " VISCOR_FIELD("contact") " pair, not of " VISCOR_FIELD("contact") " " + contact);
+      throw invalid_parameter(VISCOR_FIELD("other_youngs_modulus") ", " VISCOR_FIELD("other_poisson_ratio") ", "
+                              VISCOR_FIELD("other_radius") " and " VISCOR_FIELD("other_density") " "
+                              "describe the second bead of " VISCOR_FIELD("contact") " pair, not of "
+                              VISCOR_FIELD("contact") " " + contact);
     if (wall_given) {
       require(wall_youngs_modulus, VISCOR_FIELD("wall_youngs_modulus"), "the wall's Young's modulus, Pa; neither: a rigid wall");
       require(wall_poisson_ratio, VISCOR_FIELD("wall_poisson_ratio"), "the wall's Poisson ratio");
@@ -181,11 +184,14 @@ struct dem_job : dem_request {
       for (const auto& [value, option] : {std::pair{&youngs_modulus, VISCOR_FIELD("youngs_modulus")}, {&poisson_ratio, VISCOR_FIELD("poisson_ratio")}})
         if (!value->empty())
           throw invalid_parameter(std::string(option) + " " + *value + " is not an input of " + code + " " + damping +
-                                  ": its linear spring takes the contact stiffness " VISCOR_FIELD("k") " (N/m), not a Hertz material");
+                                  ": its linear spring takes the contact stiffness " VISCOR_FIELD("k")
+                                  " (N/m), not a Hertz material");
     } else {
       if (!stiffness.empty())
-        throw invalid_parameter(VISCOR_FIELD("k") " " + stiffness + " is the linear stiffness of yade viscoelastic; " + code + " " +
-                                damping + " takes its Hertz stiffness from " VISCOR_FIELD("youngs_modulus") " and " VISCOR_FIELD("poisson_ratio"));
+        throw invalid_parameter(VISCOR_FIELD("k")
+                                " " + stiffness + " is the linear stiffness of yade viscoelastic; " + code + " " +
+                                damping + " takes its Hertz stiffness from " VISCOR_FIELD("youngs_modulus") " and "
+                                          VISCOR_FIELD("poisson_ratio"));
       require(youngs_modulus, VISCOR_FIELD("youngs_modulus"), "Pa");
       require(poisson_ratio, VISCOR_FIELD("poisson_ratio"), "dimensionless");
     }
@@ -194,22 +200,29 @@ struct dem_job : dem_request {
     require(gravity, VISCOR_FIELD("gravity"), "m/s^2 towards the wall; 0 for none");
     check_units();
     if (!deck_damping.empty() && !deck_en.empty())
-      throw invalid_parameter("give either " VISCOR_FIELD("deck_damping") " (the deck's betan) or " VISCOR_FIELD("deck_en") " (YADE's en), not both");
+      throw invalid_parameter("give either " VISCOR_FIELD("deck_damping") " (the deck's betan) or "
+                              VISCOR_FIELD("deck_en") " (YADE's en), not both");
     if (!deck_en.empty() && model.damping != dem::damping_model::mindlin)
-      throw invalid_parameter(VISCOR_FIELD("deck_en") " " + deck_en + " is YADE's `en` input of Hertz-Mindlin (yade " VISCOR_FIELD("damping") " "
+      throw invalid_parameter(VISCOR_FIELD("deck_en") " " + deck_en + " is YADE's `en` input of Hertz-Mindlin (yade "
+                              VISCOR_FIELD("damping") " "
                               "mindlin), not an input of " + code + " " + damping);
     const bool reverse = !deck_damping.empty() || !deck_en.empty();
     if (reverse && !target_e.empty())
-      throw invalid_parameter("give either " VISCOR_FIELD("target_e") " (deck for a measured e) or " VISCOR_FIELD("deck_damping") "/" VISCOR_FIELD("deck_en") " (e for a "
+      throw invalid_parameter("give either " VISCOR_FIELD("target_e") " (deck for a measured e) or "
+                              VISCOR_FIELD("deck_damping") "/" VISCOR_FIELD("deck_en") " (e for a "
                               "deck), not both");
     if (!drop_deck_path.empty() && reverse)
-      throw invalid_parameter(VISCOR_FIELD("drop_deck") " " + drop_deck_path + " writes the drop for a calibrated deck: give "
-                              VISCOR_FIELD("target_e") ", not " VISCOR_FIELD("deck_damping") "/" VISCOR_FIELD("deck_en"));
+      throw invalid_parameter(VISCOR_FIELD("drop_deck")
+                              " " + drop_deck_path + " writes the drop for a calibrated deck: give "
+                              VISCOR_FIELD("target_e") ", not " VISCOR_FIELD("deck_damping") "/"
+                              VISCOR_FIELD("deck_en"));
     if (!drop_deck_path.empty() && kind != dem::contact_kind::wall)
-      throw invalid_parameter(VISCOR_FIELD("drop_deck") " " + drop_deck_path + " drops one bead on a wall: it needs " VISCOR_FIELD("contact") " wall, "
+      throw invalid_parameter(VISCOR_FIELD("drop_deck") " " + drop_deck_path + " drops one bead on a wall: it needs "
+                              VISCOR_FIELD("contact") " wall, "
                               "not " VISCOR_FIELD("contact") " " + contact);
     if (!drop_deck_path.empty() && model.code == dem::dem_code::yade && !drop_deck_path.ends_with(".py"))
-      throw invalid_parameter(VISCOR_FIELD("drop_deck") " " + drop_deck_path + ": a YADE script must end in .py (yade -x "
+      throw invalid_parameter(VISCOR_FIELD("drop_deck")
+                              " " + drop_deck_path + ": a YADE script must end in .py (yade -x "
                               "silently skips other files)");
     if (!variables_path.empty()) check_variables_request(model, reverse);
     refuse_outputs_not_ours();  // before any work: a foreign file, a FIFO or a directory
@@ -307,11 +320,14 @@ struct dem_job : dem_request {
   /// --variables: LAMMPS and LIGGGHTS only (a YADE script asks viscor itself), forward only.
   void check_variables_request(const dem::dem_model& model, bool reverse) const {
     if (model.code == dem::dem_code::yade)
-      throw invalid_parameter(VISCOR_FIELD("variables") " " + variables_path + " writes a LAMMPS/LIGGGHTS `variable` block; a YADE "
+      throw invalid_parameter(VISCOR_FIELD("variables")
+                              " " + variables_path + " writes a LAMMPS/LIGGGHTS `variable` block; a YADE "
                               "script is Python: import viscor and call viscor.dem(...) in it (docs/dem.md)");
     if (reverse)
-      throw invalid_parameter(VISCOR_FIELD("variables") " " + variables_path + " writes the entries of a calibrated deck: give "
-                              VISCOR_FIELD("target_e") ", not " VISCOR_FIELD("deck_damping") "/" VISCOR_FIELD("deck_en"));
+      throw invalid_parameter(VISCOR_FIELD("variables")
+                              " " + variables_path + " writes the entries of a calibrated deck: give "
+                              VISCOR_FIELD("target_e") ", not " VISCOR_FIELD("deck_damping") "/"
+                              VISCOR_FIELD("deck_en"));
   }
 
   /// Refuses a --drop-deck or --variables path that holds anything but viscor's own

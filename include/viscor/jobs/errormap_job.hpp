@@ -89,12 +89,16 @@ inline errormap_summary make_error_map(const errormap_request& q) {
     throw invalid_parameter("errormap needs -o FILE (e.g. reference_data/error_maps/" +
                             (q.law.name.empty() ? std::string("LAW") : q.law.name) + ".csv)");
   if (q.tables.empty() == (q.reference_digits == 0))
-    throw invalid_parameter("errormap needs either " VISCOR_FIELD("table") " FILE... (certified tables) or " VISCOR_FIELD("reference_digits") " N");
+    throw invalid_parameter("errormap needs either " VISCOR_FIELD("table") " FILE... (certified tables) or "
+                            VISCOR_FIELD("reference_digits") " N");
   if (q.reference_digits != 0 && (q.reference_digits < 30 || q.reference_digits > max_working_digits))
-    throw invalid_parameter(VISCOR_FIELD("reference_digits") " must be from 30 to " + std::to_string(max_working_digits) + ", got " +
+    throw invalid_parameter(VISCOR_FIELD("reference_digits")
+                            " must be from 30 to " + std::to_string(max_working_digits) + ", got " +
                             std::to_string(q.reference_digits));
-  if (q.per_interval < 1) throw invalid_parameter(VISCOR_FIELD("per_interval") " must be >= 1, got " + std::to_string(q.per_interval));
-  if (q.min_samples < 1) throw invalid_parameter(VISCOR_FIELD("min_samples") " must be >= 1, got " + std::to_string(q.min_samples));
+  if (q.per_interval < 1) throw invalid_parameter(VISCOR_FIELD("per_interval")
+                                                  " must be >= 1, got " + std::to_string(q.per_interval));
+  if (q.min_samples < 1) throw invalid_parameter(VISCOR_FIELD("min_samples")
+                                                 " must be >= 1, got " + std::to_string(q.min_samples));
   refuse_unless_regular_or_absent(q.output);
   error_map_spec spec;
   spec.gamma_edges = detail::edge_list(q.gamma_edges, "gamma-edges");

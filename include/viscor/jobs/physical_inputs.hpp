@@ -50,7 +50,8 @@ std::pair<Real, Real> bead_of_material(const contact_law& law, const Real& young
                                        dem::contact_kind kind = dem::contact_kind::wall,
                                        const dem::contact_partner<Real>& partner = {}) {
   if (!(law.alpha == exponent::rational(3, 2)))
-    throw invalid_parameter(VISCOR_FIELD("youngs_modulus") " gives a Hertz stiffness, which holds only for alpha = 3/2; the law has "
+    throw invalid_parameter(VISCOR_FIELD("youngs_modulus")
+                            " gives a Hertz stiffness, which holds only for alpha = 3/2; the law has "
                             "alpha = " + law.alpha.to_string() + ": give " VISCOR_FIELD("k") " instead");
   require_positive(radius, "radius");
   elastic_material<Real> material{youngs_modulus, poisson_ratio};
@@ -117,7 +118,8 @@ struct physical_inputs {
   /// double's range, and plausible units (a warning, or refused when strict).
   void check(const std::string& command) {
     if (deprecated_force) {
-      if (force) throw invalid_parameter("give " VISCOR_FIELD("force") ", not both " VISCOR_FIELD("force") " and " VISCOR_FIELD("F") " (" VISCOR_FIELD("F") " is its deprecated spelling)");
+      if (force) throw invalid_parameter("give " VISCOR_FIELD("force") ", not both " VISCOR_FIELD("force") " and "
+                                         VISCOR_FIELD("F") " (" VISCOR_FIELD("F") " is its deprecated spelling)");
       deprecation_warning(VISCOR_FIELD("F"), VISCOR_FIELD("force"));
       force = deprecated_force;
       deprecated_force.reset();
@@ -135,27 +137,35 @@ struct physical_inputs {
   /// its arrays' names here too.)
   void check_complete(const std::string& command) const {
     if (has_material()) {
-      if (k) throw invalid_parameter(command + ": give the stiffness either as " VISCOR_FIELD("k") " or as " VISCOR_FIELD("youngs_modulus") ", "
-                                               VISCOR_FIELD("poisson_ratio") " and " VISCOR_FIELD("radius") ", not both");
+      if (k) throw invalid_parameter(command + ": give the stiffness either as " VISCOR_FIELD("k") " or as "
+                                               VISCOR_FIELD("youngs_modulus") ", "
+                                               VISCOR_FIELD("poisson_ratio") " and " VISCOR_FIELD("radius")
+                                               ", not both");
       if (!youngs_modulus || !poisson_ratio || !radius)
-        throw invalid_parameter(command + ": a bead given as a material needs " VISCOR_FIELD("youngs_modulus") ", " VISCOR_FIELD("poisson_ratio") " and "
+        throw invalid_parameter(command + ": a bead given as a material needs " VISCOR_FIELD("youngs_modulus") ", "
+                                          VISCOR_FIELD("poisson_ratio") " and "
                                           VISCOR_FIELD("radius") " (missing " + missing_material() + ")");
-      if (m && density) throw invalid_parameter(command + ": give the mass either as " VISCOR_FIELD("m") " or as " VISCOR_FIELD("density") ", not both");
-      if (!m && !density) throw invalid_parameter(command + ": the bead needs " VISCOR_FIELD("m") " (kg) or " VISCOR_FIELD("density") " (kg/m^3)");
+      if (m && density) throw invalid_parameter(command + ": give the mass either as " VISCOR_FIELD("m") " or as "
+                                                          VISCOR_FIELD("density") ", not both");
+      if (!m && !density) throw invalid_parameter(command + ": the bead needs " VISCOR_FIELD("m") " (kg) or "
+                                                            VISCOR_FIELD("density") " (kg/m^3)");
     } else {
       if (!m) throw invalid_parameter(command + ": physical mode needs " VISCOR_FIELD("m") " (bead mass, kg)");
-      if (!k) throw invalid_parameter(command + ": physical mode needs " VISCOR_FIELD("k") " (contact stiffness, N/m^alpha)");
+      if (!k) throw invalid_parameter(command + ": physical mode needs " VISCOR_FIELD("k")
+                                                " (contact stiffness, N/m^alpha)");
     }
     check_partner(command);
     if (!v0) throw invalid_parameter(command + ": physical mode needs " VISCOR_FIELD("v0") " (impact speed, m/s)");
     if (!gravity)
-      throw invalid_parameter(command + ": physical mode needs " VISCOR_FIELD("gravity") " (m/s^2 towards the wall; 0 for none): "
+      throw invalid_parameter(command + ": physical mode needs " VISCOR_FIELD("gravity")
+                                        " (m/s^2 towards the wall; 0 for none): "
                                         "the load changes the result, so it never defaults");
   }
 
   /// Solving an impact from physical inputs (cor, evaluate) needs the damping gamma0.
   void require_gamma0(const std::string& command) const {
-    if (!gamma0) throw invalid_parameter(command + ": physical mode needs " VISCOR_FIELD("gamma0") " (the damping coefficient, SI)");
+    if (!gamma0) throw invalid_parameter(command + ": physical mode needs " VISCOR_FIELD("gamma0")
+                                                   " (the damping coefficient, SI)");
   }
 
   /// Every physical input is an SI value within double's normal range (about 2.2e-308 to
@@ -192,21 +202,28 @@ struct physical_inputs {
       throw invalid_parameter(VISCOR_FIELD("contact") " must be wall or pair, got '" + *contact + "'");
     if ((is_pair() || has_partner()) && !has_material())
       throw invalid_parameter(command + ": a wall material or a second bead needs the bead as a material "
-                                        "(" VISCOR_FIELD("youngs_modulus") ", " VISCOR_FIELD("poisson_ratio") ", " VISCOR_FIELD("radius") "), not " VISCOR_FIELD("k"));
+                                        "(" VISCOR_FIELD("youngs_modulus") ", " VISCOR_FIELD("poisson_ratio") ", "
+                                        VISCOR_FIELD("radius") "), not " VISCOR_FIELD("k"));
     const bool wall_given = wall_youngs_modulus || wall_poisson_ratio;
     const bool other_given = other_youngs_modulus || other_poisson_ratio || other_radius || other_density;
     if (wall_given && is_pair())
-      throw invalid_parameter(command + ": " VISCOR_FIELD("wall_youngs_modulus") " and " VISCOR_FIELD("wall_poisson_ratio") " describe a wall, not "
+      throw invalid_parameter(command + ": " VISCOR_FIELD("wall_youngs_modulus") " and "
+                                        VISCOR_FIELD("wall_poisson_ratio") " describe a wall, not "
                                         VISCOR_FIELD("contact") " pair");
     if (other_given && !is_pair())
-      throw invalid_parameter(command + ": " VISCOR_FIELD("other_youngs_modulus") ", " VISCOR_FIELD("other_poisson_ratio") ", " VISCOR_FIELD("other_radius") " and "
-                                        VISCOR_FIELD("other_density") " describe the second bead of " VISCOR_FIELD("contact") " pair");
+      throw invalid_parameter(command + ": " VISCOR_FIELD("other_youngs_modulus") ", "
+                                        VISCOR_FIELD("other_poisson_ratio") ", " VISCOR_FIELD("other_radius") " and "
+                                        VISCOR_FIELD("other_density") " describe the second bead of "
+                                        VISCOR_FIELD("contact") " pair");
     if (wall_given && (!wall_youngs_modulus || !wall_poisson_ratio))
-      throw invalid_parameter(command + ": a wall of its own material needs " VISCOR_FIELD("wall_youngs_modulus") " and "
+      throw invalid_parameter(command + ": a wall of its own material needs " VISCOR_FIELD("wall_youngs_modulus")
+                                        " and "
                                         VISCOR_FIELD("wall_poisson_ratio") " (neither: a rigid wall)");
     if (other_given && (!other_youngs_modulus || !other_poisson_ratio || !other_radius || !other_density))
-      throw invalid_parameter(command + ": the other bead needs " VISCOR_FIELD("other_youngs_modulus") ", " VISCOR_FIELD("other_poisson_ratio") ", "
-                                        VISCOR_FIELD("other_radius") " and " VISCOR_FIELD("other_density") " (none: a bead like the first)");
+      throw invalid_parameter(command + ": the other bead needs " VISCOR_FIELD("other_youngs_modulus") ", "
+                                        VISCOR_FIELD("other_poisson_ratio") ", "
+                                        VISCOR_FIELD("other_radius") " and " VISCOR_FIELD("other_density")
+                                        " (none: a bead like the first)");
   }
 
   /// The wall's material or the other bead at the working precision (call check() first).

@@ -165,7 +165,8 @@ inline std::size_t solve_points(std::istream& in, const std::string& name, const
     if (const std::size_t bad = first_invalid_utf8(line); bad != std::string::npos) {
       char hex[8];
       std::snprintf(hex, sizeof hex, "0x%02X", static_cast<unsigned>(static_cast<unsigned char>(line[bad])));
-      throw invalid_parameter(VISCOR_FIELD("points") ": " + name + ":" + std::to_string(line_number) + ": not UTF-8 text (byte " +
+      throw invalid_parameter(VISCOR_FIELD("points")
+                              ": " + name + ":" + std::to_string(line_number) + ": not UTF-8 text (byte " +
                               hex + " at column " + std::to_string(bad + 1) + ")");
     }
     if (line.find_first_not_of(" \t\r") == std::string::npos || line[line.find_first_not_of(" \t")] == '#') continue;
@@ -178,10 +179,12 @@ inline std::size_t solve_points(std::istream& in, const std::string& name, const
         for (std::size_t c = 0; c < header.size(); ++c) {
           const std::string& column = header[c];
           if (!detail::point_field(probe, column))
-            throw invalid_parameter(VISCOR_FIELD("points") ": " + name + ":" + std::to_string(line_number) + ": unknown column '" +
+            throw invalid_parameter(VISCOR_FIELD("points")
+                                    ": " + name + ":" + std::to_string(line_number) + ": unknown column '" +
                                     column + "' (known: " + detail::point_fields + ")");
           if (std::find(header.begin(), header.begin() + static_cast<long>(c), column) != header.begin() + static_cast<long>(c))
-            throw invalid_parameter(VISCOR_FIELD("points") ": " + name + ":" + std::to_string(line_number) + ": column '" + column +
+            throw invalid_parameter(VISCOR_FIELD("points")
+                                    ": " + name + ":" + std::to_string(line_number) + ": column '" + column +
                                     "' given twice");
         }
         continue;

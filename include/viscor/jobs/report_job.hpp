@@ -67,7 +67,8 @@ inline std::vector<std::string> cor_tables(const std::string& dir) {
     if (name.rfind("cor_", 0) == 0 && entry.path().extension() == ".csv") out.push_back(entry.path().string());
   }
   if (out.empty())
-    throw invalid_parameter(VISCOR_FIELD("data") ": '" + dir + "' holds no certified CoR tables (cor_*.csv); nothing to report");
+    throw invalid_parameter(VISCOR_FIELD("data")
+                            ": '" + dir + "' holds no certified CoR tables (cor_*.csv); nothing to report");
   std::sort(out.begin(), out.end());
   return out;
 }

@@ -40,10 +40,13 @@ struct scale_result {
 /// The conversion in the direction the inputs ask for.
 inline scale_result run_scale(scale_request q) {
   const bool inverse = q.gamma || q.g;
-  if (inverse && (!q.gamma || !q.g)) throw invalid_parameter("scaled -> physical needs both " VISCOR_FIELD("gamma") " and " VISCOR_FIELD("g"));
+  if (inverse && (!q.gamma || !q.g)) throw invalid_parameter("scaled -> physical needs both " VISCOR_FIELD("gamma")
+                                                             " and " VISCOR_FIELD("g"));
   if (inverse && q.physical.gamma0)
-    throw invalid_parameter("give either " VISCOR_FIELD("gamma0") " (physical -> scaled) or " VISCOR_FIELD("gamma") "/" VISCOR_FIELD("g") " (scaled -> physical)");
-  if (inverse && q.physical.force) throw invalid_parameter("scaled -> physical computes " VISCOR_FIELD("force") " from " VISCOR_FIELD("g") "; do not give it");
+    throw invalid_parameter("give either " VISCOR_FIELD("gamma0") " (physical -> scaled) or " VISCOR_FIELD("gamma")
+                            "/" VISCOR_FIELD("g") " (scaled -> physical)");
+  if (inverse && q.physical.force) throw invalid_parameter("scaled -> physical computes " VISCOR_FIELD("force")
+                                                           " from " VISCOR_FIELD("g") "; do not give it");
   q.physical.check("scale");
   return with_working_precision(q.digits, [&]<class Real>() {
     scale_result out;

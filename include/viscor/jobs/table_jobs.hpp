@@ -259,7 +259,8 @@ inline std::size_t merge_tables(const std::vector<std::string>& input_paths, con
   std::vector<input> inputs;
   for (const auto& path : input_paths) {
     if (std::filesystem::exists(path + ".partial"))
-      throw error("'" + path + "' is unfinished ('" + path + ".partial' exists): complete it with " VISCOR_FIELD("resume") " first");
+      throw error("'" + path + "' is unfinished ('" + path + ".partial' exists): complete it with "
+                  VISCOR_FIELD("resume") " first");
     const table_format format = table_format::of_file(path);
     input in{path, format, format.read(path), json()};
     if (!std::filesystem::exists(path + ".json"))

@@ -240,7 +240,8 @@ struct table_interrupted : error {
   /// rows_done of rows_total rows are kept in partial_file; the message is the CLI's.
   table_interrupted(std::size_t rows_done, std::size_t rows_total, std::string partial_file)
       : error("interrupted: " + std::to_string(rows_done) + " of " + std::to_string(rows_total) +
-              " rows are done and kept in '" + partial_file + "'; rerun the same command with " VISCOR_FIELD("resume") " to continue"),
+              " rows are done and kept in '" + partial_file + "'; rerun the same command with "
+              VISCOR_FIELD("resume") " to continue"),
         done(rows_done),
         total(rows_total),
         partial(std::move(partial_file)) {}
@@ -289,7 +290,8 @@ inline earlier_sessions resume_or_start(const table_job& job, const table_format
   json& meta = earlier.meta;
   const bool have_partial = std::filesystem::exists(partial);
   if (have_partial && !job.resume)
-    throw error("'" + partial + "' exists: an interrupted run of this table. Add " VISCOR_FIELD("resume") " to continue it, or "
+    throw error("'" + partial + "' exists: an interrupted run of this table. Add " VISCOR_FIELD("resume")
+                " to continue it, or "
                 "delete it (and '" + partial_meta + "') to start afresh");
   if (have_partial) {
     if (!std::filesystem::exists(partial_meta))
