@@ -5,7 +5,9 @@
 #include <viscor/exact/exact_solutions.hpp>
 #include <viscor/core/scaling.hpp>
 #include <viscor/certify/certification.hpp>
+#include <viscor/impact/adaptive_impact.hpp>
 #include <viscor/impact/solve_impact.hpp>
+#include <viscor/impact/taylor_impact.hpp>
 #if VISCOR_HAS_QD
 #include <viscor/core/double_double.hpp>
 #endif
@@ -21,11 +23,23 @@
   PREFIX template certified_result<Real> detail::certify_perturbed<Real>(                                       \
       const contact_law&, const Real&, const Real&, const certify_options&, const detail::certify_perturbation&);
 
+// The two solvers' own entry points, which tests and certify call directly: without
+// them every such unit instantiated a whole solver per type (adaptive_impact_test 132 s
+// of a build, docs/performance.md "After an edit"). Not for double-double, whose
+// solve_impact is its own (impact/double_double_impact.hpp).
+#define VISCOR_SOLVER_TEMPLATES(PREFIX, Real)                                                           \
+  PREFIX template impact_result<Real> solve_impact_taylor<Real>(const contact_law&, const Real&, const Real&, \
+                                                                const solve_options<Real>&);          \
+  PREFIX template impact_result<Real> solve_impact_adaptive<Real>(const contact_law&, const Real&, const Real&, \
+                                                                  const solve_options<Real>&);
+
 #define VISCOR_EXTERN_TEMPLATES(Real) VISCOR_TEMPLATES(extern, Real)
+#define VISCOR_EXTERN_SOLVER_TEMPLATES(Real) VISCOR_SOLVER_TEMPLATES(extern, Real)
 
 #ifndef VISCOR_COMPILING_INSTANTIATIONS
 namespace viscor {
 VISCOR_FOR_EACH_REAL(VISCOR_EXTERN_TEMPLATES)
+VISCOR_FOR_EACH_REAL(VISCOR_EXTERN_SOLVER_TEMPLATES)
 #if VISCOR_HAS_QD
 VISCOR_EXTERN_TEMPLATES(::viscor::double_double)
 #endif
