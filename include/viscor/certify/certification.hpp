@@ -473,3 +473,16 @@ certified_result<Real> certify(const contact_law& law, const Real& gamma, const 
 }
 
 }  // namespace viscor
+
+// certify is compiled once per scalar type into libviscor (src/instantiation.cpp.in):
+// declared extern here, so that no unit including this header instantiates it again.
+#define VISCOR_CERTIFY_TEMPLATES(PREFIX, Real) \
+  PREFIX template certified_result<Real> certify<Real>(const contact_law&, const Real&, const Real&,   \
+                                                       const certify_options&);                  \
+  PREFIX template certified_result<Real> detail::certify_perturbed<Real>(                              \
+      const contact_law&, const Real&, const Real&, const certify_options&, const detail::certify_perturbation&);
+#ifndef VISCOR_COMPILING_INSTANTIATIONS
+namespace viscor {
+VISCOR_FOR_EACH_COMPILED_WITH(VISCOR_CERTIFY_TEMPLATES, extern)
+}
+#endif

@@ -100,3 +100,34 @@ struct is_mpfr<boost::multiprecision::number<boost::multiprecision::mpfr_float_b
 #define VISCOR_FOR_EACH_MPFR(X)
 #endif
 #define VISCOR_FOR_EACH_REAL(X) X(double) X(long double) VISCOR_FOR_EACH_QUAD(X) VISCOR_FOR_EACH_MPFR(X)
+
+// The same with a leading argument, M(P, Real) per type: each header that defines a
+// template compiled into libviscor declares it `extern` for these types at its end
+// (VISCOR_DECLARE_COMPILED), so that a unit including only that header instantiates
+// nothing of it. VISCOR_COMPILING_INSTANTIATIONS turns the declarations off (the
+// instantiation files, and the fuzzers, which link nothing of libviscor).
+#if VISCOR_HAS_FLOAT128
+#define VISCOR_FOR_EACH_QUAD_WITH(M, P) M(P, ::viscor::quad)
+#else
+#define VISCOR_FOR_EACH_QUAD_WITH(M, P)
+#endif
+#if VISCOR_HAS_MPFR
+#define VISCOR_FOR_EACH_MPFR_WITH(M, P) M(P, ::viscor::mpfr_50) M(P, ::viscor::mpfr_100) M(P, ::viscor::mpfr_real)
+#else
+#define VISCOR_FOR_EACH_MPFR_WITH(M, P)
+#endif
+#define VISCOR_FOR_EACH_REAL_WITH(M, P) \
+  M(P, double) M(P, long double) VISCOR_FOR_EACH_QUAD_WITH(M, P) VISCOR_FOR_EACH_MPFR_WITH(M, P)
+// With double-double too, for what its instantiation file compiles (all but the two
+// solvers' own entry points: its solve_impact is its own, impact/double_double_impact.hpp).
+#if VISCOR_HAS_QD
+namespace viscor {
+namespace double_double_math {
+class double_double;  // core/double_double.hpp
+}
+using double_double_math::double_double;
+}  // namespace viscor
+#define VISCOR_FOR_EACH_COMPILED_WITH(M, P) VISCOR_FOR_EACH_REAL_WITH(M, P) M(P, ::viscor::double_double)
+#else
+#define VISCOR_FOR_EACH_COMPILED_WITH(M, P) VISCOR_FOR_EACH_REAL_WITH(M, P)
+#endif

@@ -4,6 +4,7 @@
 //   g     = (m/k)^(1/(alpha+1)) v0^(-2 alpha/(alpha+1)) (gravity + F/m).
 #pragma once
 
+#include <viscor/core/real_types.hpp>
 #include <viscor/core/contact_law.hpp>
 #include <viscor/core/parameters.hpp>
 
@@ -110,3 +111,13 @@ physical_parameters<Real> to_physical(const contact_law& law, const Real& gamma,
 }
 
 }  // namespace viscor
+
+// to_scaled is compiled once per scalar type into libviscor (src/instantiation.cpp.in):
+// declared extern here, so that no unit including this header instantiates it again.
+#define VISCOR_SCALING_TEMPLATES(PREFIX, Real) \
+  PREFIX template scaled_parameters<Real> to_scaled<Real>(const contact_law&, const physical_parameters<Real>&);
+#ifndef VISCOR_COMPILING_INSTANTIATIONS
+namespace viscor {
+VISCOR_FOR_EACH_COMPILED_WITH(VISCOR_SCALING_TEMPLATES, extern)
+}
+#endif

@@ -4,6 +4,7 @@
 // measured per quantity by a second evaluation at more digits.
 #pragma once
 
+#include <viscor/core/real_types.hpp>
 #include <viscor/core/detail/agreement_digits.hpp>
 #include <viscor/core/parameters.hpp>
 #include <viscor/core/precision.hpp>
@@ -144,3 +145,13 @@ closed_form_digits check_closed_form(const contact_law& law, const Real& gamma, 
 }
 
 }  // namespace viscor
+
+// exact_cor is compiled once per scalar type into libviscor (src/instantiation.cpp.in):
+// declared extern here, so that no unit including this header instantiates it again.
+#define VISCOR_EXACT_TEMPLATES(PREFIX, Real) \
+  PREFIX template std::optional<exact_result<Real>> exact_cor<Real>(const contact_law&, const Real&, const Real&);
+#ifndef VISCOR_COMPILING_INSTANTIATIONS
+namespace viscor {
+VISCOR_FOR_EACH_COMPILED_WITH(VISCOR_EXACT_TEMPLATES, extern)
+}
+#endif

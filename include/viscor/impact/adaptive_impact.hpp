@@ -56,6 +56,7 @@
 // Measurements behind the choices below: docs/performance.md, "impact/adaptive_impact.hpp".
 #pragma once
 
+#include <viscor/core/real_types.hpp>
 #include <viscor/ode/adaptive_integrator.hpp>
 #include <viscor/ode/lobatto_integrator.hpp>
 #include <viscor/core/contact_law.hpp>
@@ -1297,3 +1298,14 @@ impact_result<Real> solve_impact_adaptive_in(const contact_law& law, const Real&
 }  // namespace detail
 
 }  // namespace viscor
+
+// solve_impact_adaptive is compiled once per scalar type into libviscor (src/instantiation.cpp.in):
+// declared extern here, so that no unit including this header instantiates it again.
+#define VISCOR_ADAPTIVE_TEMPLATES(PREFIX, Real) \
+  PREFIX template impact_result<Real> solve_impact_adaptive<Real>(const contact_law&, const Real&, const Real&, \
+                                                                  const solve_options<Real>&);
+#ifndef VISCOR_COMPILING_INSTANTIATIONS
+namespace viscor {
+VISCOR_FOR_EACH_REAL_WITH(VISCOR_ADAPTIVE_TEMPLATES, extern)
+}
+#endif

@@ -2,6 +2,7 @@
 // integrated to the working precision of Real (report sec. 3, eq. 4).
 #pragma once
 
+#include <viscor/core/real_types.hpp>
 #include <viscor/core/contact_law.hpp>
 #include <viscor/core/exceptions.hpp>
 #include <viscor/core/impact_result.hpp>
@@ -88,4 +89,15 @@ inline void require_carried<double_double>(const impact_result<double_double>& r
   require_double_double_range(r.stop_overlap, "the stop overlap");
 }
 }  // namespace viscor::detail
+#endif
+
+// solve_impact is compiled once per scalar type into libviscor (src/instantiation.cpp.in):
+// declared extern here, so that no unit including this header instantiates it again.
+#define VISCOR_SOLVE_IMPACT_TEMPLATES(PREFIX, Real) \
+  PREFIX template impact_result<Real> solve_impact<Real>(const contact_law&, const Real&, const Real&, \
+                                                         const solve_options<Real>&);
+#ifndef VISCOR_COMPILING_INSTANTIATIONS
+namespace viscor {
+VISCOR_FOR_EACH_COMPILED_WITH(VISCOR_SOLVE_IMPACT_TEMPLATES, extern)
+}
 #endif

@@ -1091,3 +1091,14 @@ impact_result<Real> solve_impact_taylor(const contact_law& law, const Real& gamm
 }
 
 }  // namespace viscor
+
+// solve_impact_taylor is compiled once per scalar type into libviscor (src/instantiation.cpp.in):
+// declared extern here, so that no unit including this header instantiates it again.
+#define VISCOR_TAYLOR_TEMPLATES(PREFIX, Real) \
+  PREFIX template impact_result<Real> solve_impact_taylor<Real>(const contact_law&, const Real&, const Real&, \
+                                                                const solve_options<Real>&);
+#ifndef VISCOR_COMPILING_INSTANTIATIONS
+namespace viscor {
+VISCOR_FOR_EACH_REAL_WITH(VISCOR_TAYLOR_TEMPLATES, extern)
+}
+#endif
