@@ -4,6 +4,7 @@
 #include <viscor/jobs/surrogate_files.hpp>
 #include <viscor/core/precision.hpp>
 #include <viscor/core/real_io.hpp>
+
 #include <array>
 #include <sstream>
 

@@ -15,6 +15,7 @@
 #include <viscor/surrogate/surrogate_source.hpp>
 #include <viscor/surrogate/surrogate_timing.hpp>
 #include <viscor/tables/reference_table.hpp>
+
 #include <algorithm>
 #include <chrono>
 #include <cstdio>

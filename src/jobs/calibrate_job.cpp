@@ -6,6 +6,7 @@
 #include <viscor/core/real_io.hpp>
 #include <viscor/core/scaling.hpp>
 #include <viscor/scenes/calibration.hpp>
+
 #include <chrono>
 
 namespace viscor::jobs {

@@ -12,6 +12,7 @@
 #include <viscor/dem/dem_calibration.hpp>
 #include <viscor/dem/drop_deck.hpp>
 #include <viscor/dem/variable_block.hpp>
+
 #include <chrono>
 #include <filesystem>
 

@@ -3,6 +3,7 @@
 
 #include <viscor/core/precision.hpp>
 #include <viscor/core/real_io.hpp>
+
 #include <chrono>
 
 namespace viscor::jobs {

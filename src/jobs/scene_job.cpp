@@ -8,6 +8,7 @@
 #include <viscor/scenes/error_map.hpp>
 #include <viscor/scenes/scene.hpp>
 #include <viscor/surrogate/surrogate_source.hpp>
+
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>

@@ -10,12 +10,14 @@
 #include <viscor/tables/sticking_threshold.hpp>
 #include <viscor/tables/table_row.hpp>
 #include <viscor/jobs/proven_rows.hpp>
+
 #include <cstdint>
 #include <ctime>
 #include <filesystem>
 #include <iostream>
 #include <map>
 #include <memory>
+
 #ifdef VISCOR_WITH_ENCLOSE
 #include <viscor/jobs/proven_rows.hpp>
 #endif

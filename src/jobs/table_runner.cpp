@@ -4,6 +4,7 @@
 
 #include <viscor/jobs/files.hpp>
 #include <viscor/jobs/parallel_for.hpp>
+
 #include <algorithm>
 #include <atomic>
 #include <cerrno>
