@@ -103,8 +103,8 @@ struct is_mpfr<boost::multiprecision::number<boost::multiprecision::mpfr_float_b
 
 // The same with a leading argument, M(P, Real) per type: each header that defines a
 // template compiled into libviscor declares it `extern` for these types at its end
-// (VISCOR_DECLARE_COMPILED), so that a unit including only that header instantiates
-// nothing of it. VISCOR_COMPILING_INSTANTIATIONS turns the declarations off (the
+// (e.g. VISCOR_SOLVE_IMPACT_TEMPLATES in impact/solve_impact.hpp), so that a unit
+// including only that header instantiates nothing of it. VISCOR_COMPILING_INSTANTIATIONS turns the declarations off (the
 // instantiation files, and the fuzzers, which link nothing of libviscor).
 #if VISCOR_HAS_FLOAT128
 #define VISCOR_FOR_EACH_QUAD_WITH(M, P) M(P, ::viscor::quad)
