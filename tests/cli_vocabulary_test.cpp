@@ -129,6 +129,7 @@ TEST(CliVocabulary, EveryJsonFieldIsInTheSchema) {
       "cor --model tsuji --gamma 0.1 --g 0.5 --json",
       "cor --model linear --gamma 3 --g 0.5 --json",
       "cor --model hunt_crossley --gamma 0.1 --certify --json",
+      "cor --model hunt_crossley --gamma 0.1 --certified-digits 20 --json",
       std::string("cor ") + bead + " --gamma0 1.6e-6 --gravity 9.8 --json",
       std::string("scale ") + bead + " --gamma0 1.6e-6 --gravity 9.8 --force 1e-3 --json",
       std::string("scale ") + bead + " --gamma 0.1 --g 0.01 --gravity 9.8 --json",

@@ -14,6 +14,8 @@
 #include <viscor/core/real_types.hpp>
 #include <viscor/tables/reference_table.hpp>
 
+#include "certified_claims.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -28,49 +30,12 @@
 namespace {
 
 using namespace viscor;
-using number = mpfr_100;  // the tables carry at most 36 digits; bounds compared exactly enough
+using viscor::test::check_claim;
+using viscor::test::claim;
+using viscor::test::read_named_rows;
+using number = viscor::test::claim_number;
 
 const std::string data = std::string(VISCOR_SOURCE_DIR) + "/reference_data/";
-
-/// A CSV file as rows of named fields (the proven columns are not the library's format).
-std::vector<std::map<std::string, std::string>> read_named_rows(const std::string& path) {
-  std::ifstream in(path);
-  std::vector<std::map<std::string, std::string>> rows;
-  if (!in) return rows;
-  std::string line;
-  std::getline(in, line);
-  const std::vector<std::string> names = split_fields(line);
-  while (std::getline(in, line)) {
-    const std::vector<std::string> fields = split_fields(line);
-    std::map<std::string, std::string> row;
-    for (std::size_t i = 0; i < names.size() && i < fields.size(); ++i) row[names[i]] = fields[i];
-    rows.push_back(std::move(row));
-  }
-  return rows;
-}
-
-/// One unit of the last printed digit of a decimal in scientific notation
-/// ("9.9984e-01" -> 1e-4); 0 for an exact value printed without an exponent ("1", "0").
-number last_digit_unit(const std::string& text) {
-  const auto e = text.find('e');
-  if (e == std::string::npos) return 0;
-  const std::string mantissa = text.substr(0, e);
-  const int printed = static_cast<int>(mantissa.size()) - (mantissa.find('.') == std::string::npos ? 0 : 1) -
-                      (mantissa[0] == '-' ? 1 : 0);
-  return pow(number(10), std::stoi(text.substr(e + 1)) - (printed - 1));
-}
-
-/// Where a certified value sits against its enclosure [lower, upper].
-enum class claim { exact_inside, correctly_rounded, within_a_unit, wrong };
-
-claim check_claim(const std::string& certified, const std::string& lower, const std::string& upper) {
-  const number x = parse_real<number>(certified, "certified"), unit = last_digit_unit(certified);
-  const number lo = parse_real<number>(lower, "lower"), hi = parse_real<number>(upper, "upper");
-  if (unit == 0) return lo <= x && x <= hi ? claim::exact_inside : claim::wrong;  // e = 1 at gamma = 0, e = 0 of a stick
-  if (lo >= x - unit / 2 && hi <= x + unit / 2) return claim::correctly_rounded;
-  if (lo >= x - unit && hi <= x + unit) return claim::within_a_unit;
-  return claim::wrong;
-}
 
 /// The committed proven tables, by path under reference_data/proven/: NAME.csv (proven at
 /// the certified table's digits) and digitsD/NAME.csv (the same rows proven at D digits).

@@ -145,13 +145,14 @@ py::object dem(const text_fields& fields, int digits, bool strict) {
 
 // One impact from its physical inputs (the physical mode of `viscor cor`).
 py::object physical_cor(const std::string& name, const std::string& alpha, const std::string& beta,
-                        const text_fields& physical, int digits, bool certify, const std::string& method,
-                        const std::string& tolerance, long long max_steps, bool strict) {
+                        const text_fields& physical, int digits, std::optional<int> certified_digits, bool certify,
+                        const std::string& method, const std::string& tolerance, long long max_steps, bool strict) {
   jobs::cor_request q;
   q.law = jobs::resolve_law(name, alpha, beta);
   q.physical = physical_of(physical, strict);
   q.method = jobs::parse_integration_method(method, "method");
   q.tolerance = tolerance, q.digits = digits, q.certify = certify;
+  q.certified_digits = certified_digits;
   if (max_steps < 0) throw invalid_parameter("max_steps must be >= 1, got " + std::to_string(max_steps));
   if (max_steps > 0) q.max_steps = static_cast<std::size_t>(max_steps);
   return run_released([&] { return render::cor_json(jobs::run_cor(q)); });
@@ -309,8 +310,8 @@ void bind_commands(py::module_& m) {
   m.def("dem", &dem, py::arg("fields"), py::arg("digits"), py::arg("strict"),
         "The dem job (jobs/dem_job.hpp): the object of `viscor dem --json`.");
   m.def("physical_cor", &physical_cor, py::arg("name"), py::arg("alpha"), py::arg("beta"), py::arg("physical"),
-        py::arg("digits"), py::arg("certify"), py::arg("method"), py::arg("tolerance"), py::arg("max_steps"),
-        py::arg("strict"), "The cor job from physical inputs (jobs/cor_job.hpp): the object of `viscor cor --json`.");
+        py::arg("digits"), py::arg("certified_digits"), py::arg("certify"), py::arg("method"), py::arg("tolerance"),
+        py::arg("max_steps"), py::arg("strict"), "The cor job from physical inputs (jobs/cor_job.hpp): the object of `viscor cor --json`.");
   m.def("formula_points", &formula_points, py::arg("law"),
         "The (gamma, g) arrays of the certified points a formula of the law is checked at.");
   m.def("compare_formula", &compare_formula, py::arg("law"), py::arg("values"), py::arg("quantity"),

@@ -129,6 +129,7 @@ Real parse_value(const std::string& text, const std::string& name) {
 struct cor_request {
   std::string name, alpha, beta, gamma, g = "0", method = "taylor", tolerance = "0";
   int digits = 50;
+  std::optional<int> certified_digits;  // given: the working precision is chosen
   bool certify = false;
   std::size_t max_steps = solve_options<double>{}.max_steps;
 };
@@ -139,16 +140,19 @@ json cor_json(const cor_request& q) {
   if (q.method != "taylor" && q.method != "adaptive")
     throw invalid_parameter("method must be 'taylor' or 'adaptive', got '" + q.method + "'");
   if (q.max_steps < 1) throw invalid_parameter("max_steps must be >= 1, got 0");
-  json j;
-  with_working_precision(q.digits, [&]<class Real>() {
-    const Real gamma = parse_value<Real>(q.gamma, "gamma"), g = parse_value<Real>(q.g, "g");
-    solve_options<Real> options;
-    options.method = q.method == "taylor" ? integration_method::taylor : integration_method::adaptive;
-    options.tolerance = parse_real<Real>(q.tolerance, "tolerance");
-    options.max_steps = q.max_steps;
-    j = render::cor_json(jobs::solve_cor(law, gamma, g, options, q.certify));
-  });
-  return j;
+  const auto solve = [&](int digits, bool certify) {
+    return with_working_precision(digits, [&]<class Real>() {
+      const Real gamma = parse_value<Real>(q.gamma, "gamma"), g = parse_value<Real>(q.g, "g");
+      solve_options<Real> options;
+      options.method = q.method == "taylor" ? integration_method::taylor : integration_method::adaptive;
+      options.tolerance = parse_real<Real>(q.tolerance, "tolerance");
+      options.max_steps = q.max_steps;
+      return jobs::solve_cor(law, gamma, g, options, certify);
+    });
+  };
+  if (q.certified_digits)
+    return render::cor_json(jobs::certify_cor_to_goal(*q.certified_digits, [&](int digits) { return solve(digits, true); }));
+  return render::cor_json(solve(q.digits, q.certify));
 }
 
 py::object cor(const cor_request& q) {
@@ -334,17 +338,17 @@ PYBIND11_MODULE(_viscor, m) {
   m.def(
       "cor",
       [](const std::string& name, const std::string& alpha, const std::string& beta, const std::string& gamma,
-         const std::string& g, int digits, bool certify, const std::string& method, const std::string& tolerance,
-         long long max_steps) {
+         const std::string& g, int digits, std::optional<int> certified_digits, bool certify, const std::string& method,
+         const std::string& tolerance, long long max_steps) {
         if (max_steps < 0) throw viscor::invalid_parameter("max_steps must be >= 1, got " + std::to_string(max_steps));
         cor_request q;
         q.name = name, q.alpha = alpha, q.beta = beta, q.gamma = gamma, q.g = g, q.digits = digits;
-        q.certify = certify, q.method = method, q.tolerance = tolerance;
+        q.certified_digits = certified_digits, q.certify = certify, q.method = method, q.tolerance = tolerance;
         if (max_steps > 0) q.max_steps = static_cast<std::size_t>(max_steps);  // 0: the library's default
         return vp::cor(q);
       },
       py::arg("name"), py::arg("alpha"), py::arg("beta"), py::arg("gamma"), py::arg("g"), py::arg("digits"),
-      py::arg("certify"), py::arg("method"), py::arg("tolerance"), py::arg("max_steps"),
+      py::arg("certified_digits"), py::arg("certify"), py::arg("method"), py::arg("tolerance"), py::arg("max_steps"),
       "One CoR: the object of `viscor cor --json` as a dict (decimal strings).");
 
   py::class_<table_request>(m, "TableRequest")
@@ -384,14 +388,15 @@ PYBIND11_MODULE(_viscor, m) {
 
   m.def(
       "solve_points",
-      [](const std::string& source, bool from_file, int digits, unsigned threads, const std::string& method,
-         const std::string& tolerance, long long max_steps) {
+      [](const std::string& source, bool from_file, int digits, std::optional<int> certified_digits, unsigned threads,
+         const std::string& method, const std::string& tolerance, long long max_steps) {
         viscor::jobs::point_options o;
         o.method = viscor::jobs::parse_integration_method(method, "method");
         o.tolerance = tolerance;
         if (max_steps < 0) throw viscor::invalid_parameter("max_steps must be >= 1, got " + std::to_string(max_steps));
         if (max_steps > 0) o.max_steps = static_cast<std::size_t>(max_steps);
         o.default_digits = digits;
+        o.default_certified_digits = certified_digits;
         if (threads < 1 || threads > 4096)
           throw viscor::invalid_parameter("threads must be from 1 to 4096, got " + std::to_string(threads));
         o.threads = threads;
@@ -414,8 +419,8 @@ PYBIND11_MODULE(_viscor, m) {
         for (const auto& r : results) out.append(vp::to_python(r));
         return out;
       },
-      py::arg("source"), py::arg("from_file"), py::arg("digits"), py::arg("threads"), py::arg("method"),
-      py::arg("tolerance"), py::arg("max_steps"),
+      py::arg("source"), py::arg("from_file"), py::arg("digits"), py::arg("certified_digits"), py::arg("threads"),
+      py::arg("method"), py::arg("tolerance"), py::arg("max_steps"),
       "A batch of points (jobs/point_batch.hpp): one dict per point, as `viscor cor --points` prints them.");
 
   vp::bind_commands(m);

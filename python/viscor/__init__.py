@@ -15,6 +15,7 @@ InvalidParameter (a ValueError) with the library's message.
 """
 
 import os as _os
+import numbers as _numbers
 
 from . import _viscor
 from ._viscor import (CertificationError, ConvergenceError, Error, InvalidParameter, ParseError,
@@ -48,9 +49,10 @@ __all__ = ["cor", "cor_points", "Points", "exact", "approx", "calibrate", "scale
 _SCALED_LOAD_NOT_GIVEN = object()  # cor()'s g when the caller gave none (0 in scaled mode)
 
 
-def cor(law=None, gamma=None, g=_SCALED_LOAD_NOT_GIVEN, digits=50, certify=False, *, alpha=None, beta=None,
-        method="taylor", tolerance="0", max_steps=None, strict=False, **physical):
-    """The coefficient of restitution of one impact at `digits` working digits.
+def cor(law=None, gamma=None, g=_SCALED_LOAD_NOT_GIVEN, digits=None, certify=False, *, alpha=None, beta=None,
+        method="taylor", tolerance="0", max_steps=None, strict=False, certified_digits=None, **physical):
+    """The coefficient of restitution of one impact at `digits` working digits (default
+    50), or with `certified_digits` certified digits.
 
     law: a name (NAMED_LAWS), or alpha= and beta= (str such as '3/2', Fraction, int,
     Decimal). gamma, g (default 0): the scaled damping and load, str, int, Decimal,
@@ -65,7 +67,11 @@ def cor(law=None, gamma=None, g=_SCALED_LOAD_NOT_GIVEN, digits=50, certify=False
     other_radius, other_density.
     certify=True adds ``certified`` (the digits three computations agree on, four
     where the adaptive one is repeated at the reference precision), as ``viscor cor
-    --certify``. Returns a Result with the fields of ``viscor cor --json``: e,
+    --certify``. certified_digits=N (instead of digits) asks for at least N certified
+    digits of e, 1 - e, contact_time and max_compression, as ``viscor cor
+    --certified-digits N``: the working precision is chosen and raised until they are
+    certified (``certified_digits_goal`` and ``precision_runs`` say how), or
+    CertificationError says how many could be. Returns a Result with the fields of ``viscor cor --json``: e,
     one_minus_e, outcome, contact_time, max_compression, time_of_max_compression,
     energy_residual, error_estimate, steps, method, seconds, gamma, g, law,
     precision (and stop_overlap for a stick; physical, time_scale_s,
@@ -88,16 +94,25 @@ def cor(law=None, gamma=None, g=_SCALED_LOAD_NOT_GIVEN, digits=50, certify=False
         raise TypeError(f"strict must be True or False, got {strict!r}")
     if method not in ("taylor", "adaptive"):
         raise InvalidParameter(f"method must be 'taylor' or 'adaptive', got {method!r}")
+    if certified_digits is not None:
+        if digits is not None:
+            raise InvalidParameter("give either digits (the working precision) or certified_digits (the working "
+                                   "precision is then chosen), not both")
+        if isinstance(certified_digits, bool) or not isinstance(certified_digits, _numbers.Integral):
+            raise TypeError(f"certified_digits must be a whole number, got {type(certified_digits).__name__} "
+                            f"({certified_digits!r})")
+        certified_digits = int(certified_digits)  # its range: the library's (certify_to_goal)
+    digits = 50 if digits is None else digits
     if max_steps is None:
         max_steps = 0  # the library's default
     elif isinstance(max_steps, bool) or not isinstance(max_steps, int) or not 1 <= max_steps <= 10**12:
         raise InvalidParameter(f"max_steps must be a whole number from 1 to 1e12, got {max_steps!r}")
     if physical:
-        return Result(_viscor.physical_cor(name, a, b, physical, _check_digits(digits), certify, method,
+        return Result(_viscor.physical_cor(name, a, b, physical, _check_digits(digits), certified_digits, certify, method,
                                            _text(tolerance, "tolerance"), max_steps, strict))
     g = 0 if g is _SCALED_LOAD_NOT_GIVEN else g
-    fields = _viscor.cor(name, a, b, _text(gamma, "gamma"), _text(g, "g"), _check_digits(digits), certify, method,
-                         _text(tolerance, "tolerance"), max_steps)
+    fields = _viscor.cor(name, a, b, _text(gamma, "gamma"), _text(g, "g"), _check_digits(digits), certified_digits,
+                         certify, method, _text(tolerance, "tolerance"), max_steps)
     return Result(fields)
 
 

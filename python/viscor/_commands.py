@@ -266,11 +266,14 @@ class Points(list):
         return _float_column(self.strings(name))
 
 
-def cor_points(points, digits=15, *, threads=1, method="taylor", tolerance="0", max_steps=None):
+def cor_points(points, digits=15, *, threads=1, method="taylor", tolerance="0", max_steps=None,
+               certified_digits=None):
     """Many impacts in one call (the point-batch job, as ``viscor cor --points``).
 
     points: a file's path (CSV with a header, or JSON lines: docs/cli.md), or a list
-    of dicts with law (or alpha and beta), gamma, g and optionally digits. Returns
+    of dicts with law (or alpha and beta), gamma, g and optionally digits or
+    certified_digits. certified_digits=N: the certified digits of a point that gives
+    neither (as ``viscor cor --points FILE --certified-digits N``). Returns
     Points: one Result per point with the fields of ``viscor cor --json`` plus
     ``line``; a refused point has ``line`` and ``error`` instead (the others are
     still solved)."""
@@ -289,6 +292,8 @@ def cor_points(points, digits=15, *, threads=1, method="taylor", tolerance="0", 
         raise InvalidParameter(f"max_steps must be a whole number >= 1, got {max_steps!r}")
     if isinstance(threads, bool) or not isinstance(threads, int):
         raise TypeError(f"threads must be a whole number, got {threads!r}")
-    results = _viscor.solve_points(source, from_file, check_digits(digits), threads, method,
+    if certified_digits is not None and (isinstance(certified_digits, bool) or not isinstance(certified_digits, int)):
+        raise TypeError(f"certified_digits must be a whole number, got {certified_digits!r}")
+    results = _viscor.solve_points(source, from_file, check_digits(digits), certified_digits, threads, method,
                                    number_text(tolerance, "tolerance"), max_steps)
     return Points(Result(r) for r in results)

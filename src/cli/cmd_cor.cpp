@@ -43,11 +43,16 @@ struct cor_command {
   std::optional<std::string> gamma, g, deprecated_physical, points;
   std::string method = "taylor", tolerance = "0";
   int digits = 15;
+  std::optional<int> certified_digits;
+  bool digits_given = false;  // --digits on the command line (not its default)
   unsigned threads = 1;
   std::size_t max_steps = solve_options<double>{}.max_steps;
   bool certify = false, prove = false;
 
   void run() {
+    if (certified_digits && digits_given)
+      throw invalid_parameter("give either --digits (the working precision) or --certified-digits (the working "
+                              "precision is then chosen), not both");
     if (points) return run_points();
     cor_request q;
     q.law = law.resolve();
@@ -57,6 +62,7 @@ struct cor_command {
     q.method = parse_integration_method(method);
     q.tolerance = tolerance, q.max_steps = max_steps, q.digits = digits;
     q.certify = certify, q.prove = prove;
+    q.certified_digits = certified_digits;
     const cor_result r = run_cor(q);
     output.emit(render::cor_text(r), render::cor_json(r));
   }
@@ -65,7 +71,8 @@ struct cor_command {
     if (gamma || g || physical.given() || deprecated_physical || !law.model.empty() || !law.alpha.empty() ||
         certify || prove || output.json || !output.path.empty())
       throw invalid_parameter("--points reads the law, gamma, g and digits of every point from its file; give only "
-                              "--points, --threads, --method, --tolerance and --max-steps with it");
+                              "--points, --threads, --method, --tolerance, --max-steps and --digits or "
+                              "--certified-digits with it");
     if (threads < 1 || threads > 4096)
       throw invalid_parameter("--threads must be from 1 to 4096, got " + std::to_string(threads));
     point_options o;
@@ -73,6 +80,7 @@ struct cor_command {
     o.tolerance = tolerance;
     o.max_steps = max_steps;
     o.default_digits = digits;
+    o.default_certified_digits = certified_digits;
     o.threads = threads;
     const std::size_t failed = solve_points(*points, o, std::cout);
     if (failed) throw invalid_parameter(std::to_string(failed) + " point(s) of " + *points + " were refused (see their "
@@ -94,7 +102,11 @@ void setup(CLI::App& app) {
                  "law (or alpha, beta), gamma, g and optional digits; one JSON result per line");
   app.add_option("--threads", cmd->threads, "with --points: worker threads")->capture_default_str();
   app.add_option("--digits", cmd->digits, "working precision in decimal digits (with --points: the default)")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->each([cmd](const std::string&) { cmd->digits_given = true; });
+  app.add_option("--certified-digits", cmd->certified_digits,
+                 "at least this many certified digits of e, 1 - e, T_f and u_max: the working precision is chosen "
+                 "and raised until they are certified (implies --certify; with --points: the default)");
   app.add_option("--method", cmd->method, "integrator: taylor or adaptive")->capture_default_str();
   app.add_option("--tolerance", cmd->tolerance, "relative tolerance per step (0: working precision)")
       ->capture_default_str();

@@ -26,23 +26,11 @@ inline void check_provable(const contact_law& law, bool is_physical) {
 
 }  // namespace detail
 
-/// The whole `viscor cor` job for one point: inputs checked, solved at the working
-/// precision, optionally certified and proven.
-cor_result run_cor(cor_request q) {
+namespace {
+
+// One run of the job at q.digits.
+cor_result run_cor_at_precision(const cor_request& q) {
   const bool is_physical = q.physical.given();
-  if (is_physical && (q.gamma || q.g))
-    throw invalid_parameter("give either the physical inputs (" + q.physical.given_names() +
-                            ") or the scaled " VISCOR_FIELD("gamma") "/" VISCOR_FIELD("g") ", not both");
-  if (!is_physical && !q.gamma)
-    throw invalid_parameter("cor needs " VISCOR_FIELD("gamma") " (and optionally " VISCOR_FIELD("g")
-                            "), or the physical inputs " VISCOR_FIELD("m") " " VISCOR_FIELD("k") " "
-                            VISCOR_FIELD("gamma0") " " VISCOR_FIELD("v0") " "
-                            VISCOR_FIELD("gravity") " [" VISCOR_FIELD("force") "], or " VISCOR_FIELD("points") " FILE");
-  if (is_physical) {
-    q.physical.check("cor");
-    q.physical.require_gamma0("cor");
-  }
-  if (q.prove) detail::check_provable(q.law, is_physical);
   cor_result out = with_working_precision(q.digits, [&]<class Real>() {
     Real gamma_value, g_value;
     std::optional<scaled_parameters<Real>> scales;
@@ -76,6 +64,46 @@ cor_result run_cor(cor_request q) {
   if (q.prove) out.proof = viscor::enclose(q.law, *q.gamma, q.g ? *q.g : std::string("0"), q.digits);
 #endif
   return out;
+}
+
+// The goal's runs certify without proving; the proof, when asked for, runs once at the
+// precision that met the goal.
+cor_result run_cor_to_goal(cor_request q) {
+  const int wanted = *q.certified_digits;
+  const bool prove = q.prove;
+  q.certified_digits.reset();
+  q.certify = true, q.prove = false;
+  cor_result out = certify_cor_to_goal(wanted, [&](int digits) {
+    q.digits = digits;
+    return run_cor_at_precision(q);
+  });
+#if defined(VISCOR_WITH_ENCLOSE)
+  if (prove) out.proof = viscor::enclose(q.law, *q.gamma, q.g ? *q.g : std::string("0"), q.digits);
+#else
+  (void)prove;  // refused by run_cor's checks
+#endif
+  return out;
+}
+
+}  // namespace
+
+cor_result run_cor(cor_request q) {
+  const bool is_physical = q.physical.given();
+  if (is_physical && (q.gamma || q.g))
+    throw invalid_parameter("give either the physical inputs (" + q.physical.given_names() +
+                            ") or the scaled " VISCOR_FIELD("gamma") "/" VISCOR_FIELD("g") ", not both");
+  if (!is_physical && !q.gamma)
+    throw invalid_parameter("cor needs " VISCOR_FIELD("gamma") " (and optionally " VISCOR_FIELD("g")
+                            "), or the physical inputs " VISCOR_FIELD("m") " " VISCOR_FIELD("k") " "
+                            VISCOR_FIELD("gamma0") " " VISCOR_FIELD("v0") " "
+                            VISCOR_FIELD("gravity") " [" VISCOR_FIELD("force") "], or " VISCOR_FIELD("points") " FILE");
+  if (is_physical) {
+    q.physical.check("cor");
+    q.physical.require_gamma0("cor");
+  }
+  if (q.prove) detail::check_provable(q.law, is_physical);
+  if (q.certified_digits) return run_cor_to_goal(q);
+  return run_cor_at_precision(q);
 }
 
 }  // namespace viscor::jobs

@@ -5,6 +5,14 @@ namespace viscor::jobs {
 
 namespace detail {
 
+/// A point's whole-number field (digits, certified_digits); empty when not given.
+std::optional<int> whole_number_field(const std::string& text, const char* name) {
+  if (text.empty()) return std::nullopt;
+  if (text.find_first_not_of("0123456789") != std::string::npos || text.size() > 6 || std::stoi(text) < 1)
+    throw invalid_parameter(std::string(name) + " must be a whole number from 1 to 999999, got '" + text + "'");
+  return std::stoi(text);
+}
+
 /// Solves one point; the JSON line (or an "error" line).
 json solve_point(const point_text& p, const point_options& o, bool& refused) {
   json j;
@@ -16,21 +24,26 @@ json solve_point(const point_text& p, const point_options& o, bool& refused) {
     if (p.law.empty() && (p.alpha.empty() || p.beta.empty())) throw invalid_parameter("needs law, or both alpha and beta");
     const contact_law law = resolve_law(p.law, p.alpha, p.beta);
     if (p.gamma.empty()) throw invalid_parameter("missing gamma");
-    int digits = o.default_digits;
-    if (!p.digits.empty()) {
-      if (p.digits.find_first_not_of("0123456789") != std::string::npos || p.digits.size() > 6 ||
-          std::stoi(p.digits) < 1)
-        throw invalid_parameter("digits must be a whole number from 1 to 999999, got '" + p.digits + "'");
-      digits = std::stoi(p.digits);
+    const std::optional<int> digits = whole_number_field(p.digits, "digits");
+    const std::optional<int> certified_digits = whole_number_field(p.certified_digits, "certified_digits");
+    if (digits && certified_digits) throw invalid_parameter("give either digits or certified_digits, not both");
+    const auto solve = [&](int working_digits, bool certify) {
+      return with_working_precision(working_digits, [&]<class Real>() {
+        solve_options<Real> options;
+        options.method = o.method;
+        options.tolerance = parse_real<Real>(o.tolerance, "tolerance");
+        options.max_steps = o.max_steps;
+        const Real gamma = parse_real<Real>(p.gamma, "gamma"), g = parse_real<Real>(p.g, "g");
+        return solve_cor(law, gamma, g, options, certify);
+      });
+    };
+    // The point's own digits or certified digits first, then the batch's.
+    const std::optional<int> goal = digits ? std::nullopt : certified_digits ? certified_digits : o.default_certified_digits;
+    if (!goal) {
+      render::add_cor_fields(j, solve(digits.value_or(o.default_digits), false));
+    } else {
+      render::add_cor_fields(j, certify_cor_to_goal(*goal, [&](int working_digits) { return solve(working_digits, true); }));
     }
-    with_working_precision(digits, [&]<class Real>() {
-      solve_options<Real> options;
-      options.method = o.method;
-      options.tolerance = parse_real<Real>(o.tolerance, "tolerance");
-      options.max_steps = o.max_steps;
-      const Real gamma = parse_real<Real>(p.gamma, "gamma"), g = parse_real<Real>(p.g, "g");
-      render::add_cor_fields(j, solve_cor(law, gamma, g, options));
-    });
   } catch (const error& e) {
     j["error"] = e.what();
     refused = true;

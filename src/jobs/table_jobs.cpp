@@ -58,6 +58,13 @@ inline json method_provenance(const table_spec& table) {
       "exact: closed forms, with TOMS748 root finding to the working precision where a time is implicit; "
       "certified: the tolerances of viscor::certify at the working precision";
   j["min_digits"] = spec.min_digits;
+  if (spec.certified_digits > 0)
+    j["certified_digits"] = {
+        {"requested", spec.certified_digits},
+        {"rule", "every row certified to at least this many digits: computed at the scalar's requested_digits "
+                 "(the goal + the safety margin, + 1 in MPFR), and a row that falls short again at a precision "
+                 "raised by its shortfall + 1 (at most doubled, at most " + std::to_string(max_precision_runs) +
+                 " runs; include/viscor/certify/certified_digits_goal.hpp)"}};
   if (spec.method != row_method::exact) {
     const certify_options defaults;
     j["certify"] = {
@@ -113,6 +120,10 @@ inline void require_proof(const table_spec& table) {
                           "(apt-get install libflint-arb-dev)");
 #endif
   const grid_spec& spec = table.grid;
+  // A row raised to more digits than the proof's would be checked against a wider enclosure.
+  if (spec.certified_digits > 0)
+    throw parse_error(spec.source + ": field certified_digits: method \"proven\" proves every row at one "
+                      "precision: give the working digits as digits");
   if (spec.digits < 5)
     throw parse_error(spec.source + ": field digits: method \"proven\" needs at least 5 digits, got " +
                       std::to_string(spec.digits));
@@ -176,6 +187,9 @@ table_run_summary make_sticking_table(const table_spec& table, const table_run_o
   if (table.proven)
     throw parse_error(table.method_where + ": field method: \"proven\" is a method of CoR tables (viscor table); "
                       "sticking thresholds are certified (\"auto\", \"certify\" or \"exact\")");
+  if (spec.certified_digits > 0)
+    throw parse_error(where + ": field certified_digits: a sticking-threshold spec asks for its digits as "
+                      "threshold_digits (and the working precision as digits)");
   if (spec.threshold_digits < 1)
     throw parse_error(where + ": field threshold_digits: missing: a sticking-threshold spec gives the "
                       "digits wanted, e.g. \"threshold_digits\": 30");

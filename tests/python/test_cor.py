@@ -101,6 +101,28 @@ class SameDigitsAsTheCli(unittest.TestCase):
                                "50"], check=True, capture_output=True, text=True).stdout
         self.assertIn("e          " + r.e_exact + "\n", text)
 
+    def test_certified_digits_asked_for(self):
+        """certified_digits=N: the CLI's --certified-digits N, the same precision runs and
+        digits; at least N certified, and the working precision chosen, not given."""
+        for wanted in (30, 40):
+            with self.subTest(certified_digits=wanted):
+                out = subprocess.run([CLI, "cor", "--model", "hunt_crossley", "--gamma", "0.0245", "--g", "1",
+                                      "--certified-digits", str(wanted), "--json"],
+                                     check=True, capture_output=True, text=True).stdout
+                cli = json.loads(out)
+                r = viscor.cor("hunt_crossley", "0.0245", "1", certified_digits=wanted)
+                self.assertGreaterEqual(r.certified.certified_digits, wanted)
+                self.assertEqual(r.certified_digits_goal, wanted)
+                self.assertEqual([p.to_dict() for p in r.precision_runs], cli["precision_runs"])
+                self.assertEqual(r.certified.e_exact, cli["certified"]["e"])
+                self.assertEqual(r.e_exact, cli["e"])
+        with self.assertRaises(viscor.InvalidParameter):
+            viscor.cor("hunt_crossley", "0.0245", "1", digits=40, certified_digits=30)
+        with self.assertRaisesRegex(viscor.InvalidParameter, "certified_digits must be from 1 to"):
+            viscor.cor("hunt_crossley", "0.0245", "1", certified_digits=0)
+        with self.assertRaises(TypeError):
+            viscor.cor("hunt_crossley", "0.0245", "1", certified_digits=30.0)
+
 
 class ResultObject(unittest.TestCase):
     def test_conversions(self):

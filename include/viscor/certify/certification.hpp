@@ -41,6 +41,7 @@
 #pragma once
 
 #include <viscor/impact/adaptive_impact.hpp>
+#include <viscor/certify/certified_digits_goal.hpp>
 #include <viscor/certify/detail/perturbation.hpp>
 #include <viscor/core/contact_law.hpp>
 #include <viscor/core/detail/agreement_digits.hpp>
@@ -92,7 +93,7 @@ inline std::string_view to_string(certified_source s) {
 
 /// Options of certify.
 struct certify_options {
-  int safety_margin = 2;     ///< decimal digits subtracted from the agreement
+  int safety_margin = default_safety_margin;  ///< decimal digits subtracted from the agreement
   /// Precision of the reference run in decimal digits; 0: the default
   /// detail::reference_digits<Real>() = working + max(5, working/20), in a fixed-precision
   /// mpfr type (fast); any other value runs the reference in mpfr_real at that precision.

@@ -61,6 +61,10 @@ inline constexpr char source[] = "source";                            ///< what 
 inline constexpr char precision_digits[] = "precision_digits";        ///< decimal digits of one computation
 inline constexpr char outcome_proven[] = "outcome_proven";            ///< the proven outcome
 inline constexpr char proof[] = "proof";                              ///< the argument that decided it
+/// Certified digits asked for (`--certified-digits`): the goal, and each run's working
+/// and certified digits (objects of working_digits, certified_digits).
+inline constexpr char certified_digits_goal[] = "certified_digits_goal";
+inline constexpr char precision_runs[] = "precision_runs";
 
 /// Errors and bounds.
 inline constexpr char error_estimate[] = "error_estimate";            ///< a solver's estimate of its absolute error of e

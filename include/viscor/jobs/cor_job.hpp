@@ -50,6 +50,9 @@ struct cor_request {
   std::string tolerance = "0";          ///< relative tolerance per step (0: the working precision)
   std::size_t max_steps = solve_options<double>{}.max_steps;
   int digits = 15;                      ///< working precision in decimal digits
+  /// At least this many certified digits of e, 1 - e, T_f and u_max: the working
+  /// precision is chosen (certify/certified_digits_goal.hpp) and `digits` is not read.
+  std::optional<int> certified_digits;
   bool certify = false;                 ///< add the certified digits (viscor::certify)
   bool prove = false;                   ///< add proven enclosures (needs viscor::enclose and scaled exact inputs)
 };
@@ -72,8 +75,24 @@ cor_result solve_cor(const contact_law& law, const Real& gamma, const Real& g, c
   return out;
 }
 
+/// Calls solve(working_digits), a certified cor_result, at rising precision until it
+/// certifies `wanted` digits (certify/certified_digits_goal.hpp); the result carries the
+/// runs in `goal`. Throws certified_digits_unreached when they fall short.
+template <class Solve>
+cor_result certify_cor_to_goal(int wanted, Solve&& solve) {
+  certified_digits_goal goal;
+  cor_result r = certify_to_goal(
+      wanted, certify_options{}.safety_margin, solve,
+      [](const cor_result& c) { return precision_run{c.certified->working_digits, c.certified->certified_digits}; },
+      goal);
+  r.goal = std::move(goal);
+  return r;
+}
+
 /// The whole `viscor cor` job for one point: inputs checked, solved at the working
-/// precision, optionally certified and proven.
+/// precision, optionally certified and proven; with certified_digits, solved and
+/// certified at rising precision until the goal is met (result.goal says how), or
+/// certified_digits_unreached.
 cor_result run_cor(cor_request q);
 
 // solve_cor for the types with_working_precision picks is compiled once (src/jobs/cor_job.cpp).

@@ -117,6 +117,24 @@ inline void write_certified_text(std::ostream& text, const certified_result<work
   }
 }
 
+/// The certified digits asked for and the precision of each run made for them.
+inline void add_goal_json(json& j, const certified_digits_goal& goal) {
+  j[field::certified_digits_goal] = goal.certified_digits;
+  json runs = json::array();
+  for (const precision_run& r : goal.runs)
+    runs.push_back(json{{field::working_digits, r.working_digits}, {field::certified_digits, r.certified_digits}});
+  j[field::precision_runs] = runs;
+}
+
+/// The readable line of a goal of certified digits (add_goal_json's content).
+inline void write_goal_text(std::ostream& text, const certified_digits_goal& goal) {
+  text << "goal       " << goal.certified_digits << " certified digits: ";
+  for (std::size_t i = 0; i < goal.runs.size(); ++i)
+    text << (i ? ", then " : "") << goal.runs[i].certified_digits << " certified at " << goal.runs[i].working_digits
+         << " working digits";
+  text << "\n";
+}
+
 /// A proof's bounds, proven digits and outcome (`viscor prove`, `viscor cor --prove`).
 inline void add_proof_json(json& j, const proofs::proven_decimals& p) {
   j[field::outcome_proven] = std::string(to_string(p.outcome));
@@ -172,6 +190,7 @@ inline void add_cor_fields(json& j, const jobs::cor_result& r) {
     j[field::max_compression_m] = number(r.physical->max_compression_m);
   }
   if (r.certified) j[field::certified] = certified_json(*r.certified);
+  if (r.goal) add_goal_json(j, *r.goal);
   if (r.proof) add_proof_json(j, *r.proof);
 }
 
@@ -217,6 +236,7 @@ inline std::string cor_text(const jobs::cor_result& r) {
        << "seconds    " << r.seconds << " s\n"
        << "digits     " << r.precision.digits << " (working precision)\n";
   if (r.certified) write_certified_text(text, *r.certified);
+  if (r.goal) write_goal_text(text, *r.goal);
   if (r.proof) write_proof_text(text, *r.proof);
   return text.str();
 }

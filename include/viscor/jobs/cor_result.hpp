@@ -12,6 +12,7 @@
 #include <viscor/jobs/precision_used.hpp>
 
 #include <viscor/certify/certification.hpp>
+#include <viscor/certify/certified_digits_goal.hpp>
 
 #include <optional>
 #include <utility>
@@ -37,6 +38,7 @@ struct cor_result : impact_result<working_number> {
   double seconds = 0;  ///< wall time of the solve
   std::optional<physical_side> physical;                   ///< SI inputs: their side
   std::optional<certified_result<working_number>> certified;  ///< with certify
+  std::optional<certified_digits_goal> goal;                  ///< with certified_digits: the runs it took
   std::optional<proofs::proven_decimals> proof;             ///< with prove
 };
 

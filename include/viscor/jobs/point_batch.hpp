@@ -1,7 +1,8 @@
 // A batch of points (`viscor cor --points FILE|-`, viscor::jobs::solve_points):
 // many impacts from one process. Each input line is a
 // point, CSV (first line a header naming the columns) or JSON lines, with the law
-// (`law`, or `alpha` and `beta`), `gamma`, `g` and optionally `digits`; each output
+// (`law`, or `alpha` and `beta`), `gamma`, `g` and optionally `digits` (the working
+// precision) or `certified_digits` (the digits to certify); each output
 // line is one JSON object with the same fields as `viscor cor --json`, plus `line`
 // (the input line) — or `line` and `error` for a refused point. Results are
 // printed in input order; with --threads N, N points are solved at a time.
@@ -23,6 +24,7 @@
 #include <fstream>
 #include <functional>
 #include <iostream>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -35,13 +37,15 @@ struct point_options {
   std::string tolerance = "0";
   std::size_t max_steps = solve_options<double>{}.max_steps;  ///< the library's default budget
   int default_digits = 15;
+  /// Certified digits of a point that gives neither digits nor certified_digits (empty: none).
+  std::optional<int> default_certified_digits;
   unsigned threads = 1;
 };
 
 /// One input point as text.
 struct point_text {
   std::size_t line = 0;
-  std::string law, alpha, beta, gamma, g = "0", digits;
+  std::string law, alpha, beta, gamma, g = "0", digits, certified_digits;
 };
 
 namespace detail {
@@ -53,10 +57,11 @@ inline std::string* point_field(point_text& p, const std::string& name) {
   if (name == "gamma") return &p.gamma;
   if (name == "g") return &p.g;
   if (name == "digits") return &p.digits;
+  if (name == "certified_digits") return &p.certified_digits;
   return nullptr;
 }
 
-constexpr const char* point_fields = "law, alpha, beta, gamma, g, digits";
+constexpr const char* point_fields = "law, alpha, beta, gamma, g, digits, certified_digits";
 
 /// Reads one JSON-lines point; numbers keep their exact text (table_spec.hpp's reader).
 class point_reader : public node_reader {

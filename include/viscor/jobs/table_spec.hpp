@@ -16,6 +16,7 @@
 #include <viscor/jobs/files.hpp>
 
 #include <viscor/tables/grid_spec.hpp>
+#include <viscor/certify/certified_digits_goal.hpp>
 
 #include <nlohmann/json.hpp>
 
@@ -233,6 +234,7 @@ class spec_reader : public node_reader {
     if (root.kind != spec_node::type::object) fail(root, "spec", "the spec must be a JSON object");
     spec.source = m_file;
     bool have_laws = false;
+    const spec_node* digits_node = nullptr;
     for (std::size_t i = 0; i < root.members.size(); ++i) {
       const auto& [key, node] = root.members[i];
       if (key == "description" || key == "comment") {
@@ -247,6 +249,9 @@ class spec_reader : public node_reader {
         spec.g = axis(node, key);
       } else if (key == "digits") {
         spec.digits = integer(node, key, 1, max_working_digits);
+        digits_node = &node;
+      } else if (key == "certified_digits") {
+        spec.certified_digits = integer(node, key, 1, max_working_digits - default_safety_margin - 1);
       } else if (key == "method") {
         const std::string m = string(node, key);
         result.method_where = m_file + ":" + std::to_string(node.line);
@@ -266,9 +271,15 @@ class spec_reader : public node_reader {
         spec.threshold_digits = integer(node, key, 1, max_working_digits);
       } else {
         throw parse_error(m_file + ":" + std::to_string(root.member_lines[i]) + ": field " + key +
-                          ": unknown field (known: description, laws, gamma, g, digits, method, min_digits, "
-                          "solve_for, threshold_digits)");
+                          ": unknown field (known: description, laws, gamma, g, digits, certified_digits, method, "
+                          "min_digits, solve_for, threshold_digits)");
       }
+    }
+    if (spec.certified_digits > 0) {  // the working precision is chosen (certify/certified_digits_goal.hpp)
+      if (digits_node)
+        fail(*digits_node, "digits", "give either digits (the working precision) or certified_digits (the working "
+                                     "precision is then chosen), not both");
+      spec.digits = first_working_digits(spec.certified_digits);
     }
     if (!have_laws) fail(root, "laws", "missing: list the contact laws, e.g. \"laws\": [\"linear\", \"tsuji\"]");
     validate(spec);  // digits, min_digits, laws
@@ -438,7 +449,8 @@ inline json spec_to_json(const table_spec& table) {
   };
   if (!spec.gamma.empty()) j["gamma"] = axis_json(spec.gamma);
   if (!spec.g.empty()) j["g"] = axis_json(spec.g);
-  j["digits"] = spec.digits;
+  if (spec.certified_digits > 0) j["certified_digits"] = spec.certified_digits;  // digits follows from it
+  else j["digits"] = spec.digits;
   j["method"] = table.proven ? std::string("proven") : to_string(spec.method);
   j["min_digits"] = spec.min_digits;
   if (spec.threshold_digits > 0) {

@@ -83,7 +83,8 @@ struct grid_spec {
   std::string description;
   std::vector<contact_law> laws;
   grid_axis gamma, g;
-  int digits = 40;                    ///< working precision, decimal digits
+  int digits = 40;                    ///< working precision, decimal digits (with certified_digits: the first one)
+  int certified_digits = 0;           ///< certified digits asked of every row (0: none; digits is the precision)
   row_method method = row_method::automatic;
   int min_digits = 0;                 ///< a row certified to fewer digits fails the run
   // Sticking thresholds only:

@@ -31,6 +31,7 @@
 #include <string>
 
 #include <viscor/certify/certification.hpp>
+#include <viscor/certify/certified_digits_goal.hpp>
 
 namespace viscor {
 
@@ -39,9 +40,14 @@ struct table_settings {
   int digits = 40;  ///< working precision, decimal digits
   row_method method = row_method::automatic;
   int min_digits = 0;  ///< rebound rows certified to fewer digits are errors
+  /// Certified digits asked of every row (0: none): a row that falls short at `digits`
+  /// is computed again at a raised precision (certify/certified_digits_goal.hpp).
+  int certified_digits = 0;
 
   /// The settings a spec asks for.
-  static table_settings from(const grid_spec& spec) { return {spec.digits, spec.method, spec.min_digits}; }
+  static table_settings from(const grid_spec& spec) {
+    return {spec.digits, spec.method, spec.min_digits, spec.certified_digits};
+  }
 };
 
 /// A certified evaluation at one point, in the working type.
@@ -153,25 +159,63 @@ table_row make_row(const grid_point& p, const point_result<Real>& r) {
   return row;
 }
 
-/// Computes one row of a CoR table: parses the exact decimal inputs at the
-/// working precision of `settings` (in the calling thread), certifies the point
-/// and rounds the results to their certified digits. Throws certification_error
-/// for an uncertified outcome or a rebound certified to fewer than
-/// settings.min_digits digits: a row is written certified or not at all.
-inline table_row compute_row(const grid_point& p, const table_settings& settings) {
-  return with_working_precision(settings.digits, [&]<class Real>() -> table_row {
+namespace detail {
+
+/// One row computed at settings.digits, not yet judged.
+struct row_attempt {
+  table_row row;
+  bool outcome_certified = true;
+  int working_digits = 0;  ///< decimal digits of the type it ran in
+};
+
+inline row_attempt attempt_row(const grid_point& p, const table_settings& settings) {
+  return with_working_precision(settings.digits, [&]<class Real>() -> row_attempt {
     const Real gamma = parse_real<Real>(p.gamma, "gamma"), g = parse_real<Real>(p.g, "g");
     const point_result<Real> r = evaluate_point(p.law, gamma, g, settings, decimal_inputs{{p.gamma, p.g}});
-    const std::string where = "row " + std::to_string(p.index) + " (" + p.law.describe() + ", gamma = " + p.gamma +
-                              ", g = " + p.g + ")";
-    if (!r.outcome_certified)
-      throw certification_error(where + ": the methods disagree on the outcome (rebound or stick)");
-    if (r.outcome == impact_outcome::rebound && (r.certified_digits < 1 || r.certified_digits < settings.min_digits))
-      throw certification_error(where + ": certified to " + std::to_string(r.certified_digits) +
-                                " digits only (min_digits = " + std::to_string(settings.min_digits) +
-                                "); raise the working digits");
-    return make_row(p, r);
+    return {make_row(p, r), r.outcome_certified, decimal_digits<Real>()};
   });
+}
+
+}  // namespace detail
+
+/// Computes one row of a CoR table: parses the exact decimal inputs at the
+/// working precision of `settings` (in the calling thread), certifies the point
+/// and rounds the results to their certified digits; with settings.certified_digits,
+/// again at a raised precision until the row has them. Throws certification_error
+/// for an uncertified outcome or a rebound certified to fewer than
+/// settings.min_digits (or certified_digits) digits: a row is written certified or
+/// not at all.
+inline table_row compute_row(const grid_point& p, const table_settings& settings) {
+  const std::string where = "row " + std::to_string(p.index) + " (" + p.law.describe() + ", gamma = " + p.gamma +
+                            ", g = " + p.g + ")";
+  detail::row_attempt a;
+  if (settings.certified_digits > 0) {
+    table_settings at = settings;
+    certified_digits_goal goal;
+    try {
+      a = certify_to_goal(
+          settings.certified_digits, default_safety_margin,
+          [&](int digits) {
+            at.digits = digits;
+            return detail::attempt_row(p, at);
+          },
+          [](const detail::row_attempt& x) {
+            return precision_run{x.working_digits, x.outcome_certified ? x.row.certified_digits : 0};
+          },
+          goal);
+    } catch (const certified_digits_unreached& e) {
+      throw certification_error(where + ": " + e.marked());
+    }
+  } else {
+    a = detail::attempt_row(p, settings);
+  }
+  if (!a.outcome_certified)
+    throw certification_error(where + ": the methods disagree on the outcome (rebound or stick)");
+  if (a.row.outcome == impact_outcome::rebound && (a.row.certified_digits < 1 || a.row.certified_digits < settings.min_digits))
+    throw certification_error(where + ": certified to " + std::to_string(a.row.certified_digits) +
+                              " digits only (min_digits = " + std::to_string(settings.min_digits) +
+                              "); raise the working digits");
+  return a.row;
 }
 
 }  // namespace viscor
