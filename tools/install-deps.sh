@@ -31,6 +31,7 @@ packages=(
   yade                      # DEM program run by tests/yade_drop_*test.cpp (docs/dem.md, YADE 2023.02a)
   slurm-wlm munge           # a one-node Slurm cluster for the job array of docs/tables.md (tests/slurm_table_test.sh)
   python3-distributed       # viscor.dask: tables, points and evaluate on a Dask cluster (tests/python/test_dask.py)
+  python3-tqdm              # progress bars of viscor.table and viscor.dask (docs/python.md)
   clang libclang-rt-14-dev  # libFuzzer and clang's sanitizers: tests/fuzz (docs/robustness.md)
   libc++-14-dev libc++abi-14-dev  # the fuzzers' C++ library (tests/fuzz/CMakeLists.txt says why)
 )

@@ -19,6 +19,8 @@
 #include <viscor/jobs/cor_render.hpp>
 #include <viscor/jobs/point_batch.hpp>
 #include <viscor/jobs/scene_job.hpp>
+#include <viscor/jobs/table_estimate.hpp>
+#include <viscor/jobs/table_estimate_render.hpp>
 #include <viscor/jobs/table_jobs.hpp>
 #include <viscor/jobs/unit_checks.hpp>
 #include <viscor/jobs/data_directory.hpp>
@@ -170,6 +172,7 @@ struct table_request {
   std::string spec_text, spec_name, output, shard;
   bool from_file = false, sticking = false, resume = false, quiet = true;
   int threads = -1;  // -1: every core
+  py::object progress = py::none();  // callable(done, total), or None
 };
 
 // Runs a table job without the GIL. Ctrl-C in Python stops it after the rows in
@@ -187,8 +190,22 @@ std::string table(const table_request& q) {
   run.quiet = q.quiet;
   run.should_stop = [] {
     py::gil_scoped_acquire gil;
-    return PyErr_CheckSignals() != 0;  // the Python exception stays set
+    // The exception stays set: a signal's handler may also have run in the progress callback.
+    return PyErr_Occurred() != nullptr || PyErr_CheckSignals() != 0;
   };
+  if (!q.progress.is_none())
+    run.on_progress = [&progress = q.progress](std::size_t done, std::size_t total) {
+      py::gil_scoped_acquire gil;
+      if (PyErr_Occurred()) return;  // interrupted already: Python code cannot run
+      try {
+        progress(done, total);
+      } catch (py::error_already_set& e) {
+        // A failing display must not stop the run; Ctrl-C or SIGTERM, whose handler the
+        // interpreter may run inside the callback, must.
+        if (e.matches(PyExc_Exception)) e.discard_as_unraisable("viscor.table's progress callback");
+        else e.restore();
+      }
+    };
   std::exception_ptr failure;
   {
     py::gil_scoped_release release;
@@ -217,7 +234,17 @@ std::string table(const table_request& q) {
     }
     std::rethrow_exception(failure);
   }
+  if (PyErr_Occurred()) throw py::error_already_set();  // interrupted as the last row finished: the table is whole
   return q.output;
+}
+
+// The estimate of a table run (jobs/table_estimate.hpp): computes nothing.
+py::object table_estimate(const table_request& q) {
+  const jobs::table_spec spec = q.from_file ? jobs::read_spec_json(q.spec_name)
+                                            : jobs::parse_spec_json(q.spec_text, q.spec_name);
+  const shard part = q.shard.empty() ? shard{} : shard::parse(q.shard);
+  const int threads = q.threads != -1 ? q.threads : jobs::table_run_options{}.threads;
+  return to_python(render::table_estimate_json(jobs::estimate_cor_table(spec, part, threads)));
 }
 
 // The columns and rows of a table file, validated by the library's reader.
@@ -361,9 +388,12 @@ PYBIND11_MODULE(_viscor, m) {
       .def_readwrite("sticking", &table_request::sticking)
       .def_readwrite("resume", &table_request::resume)
       .def_readwrite("quiet", &table_request::quiet)
-      .def_readwrite("threads", &table_request::threads);
+      .def_readwrite("threads", &table_request::threads)
+      .def_readwrite("progress", &table_request::progress);
   m.def("table", &vp::table, py::arg("request"),
         "Runs a table job (jobs/table_jobs.hpp) without the GIL; returns the output path.");
+  m.def("table_estimate", &vp::table_estimate, py::arg("request"),
+        "The estimate of a table run (jobs/table_estimate.hpp) as a dict; computes nothing.");
   m.def("table_columns", &vp::table_columns, py::arg("path"),
         "(column names, rows of decimal strings) of a viscor table file, checked by the library's reader.");
   m.def(

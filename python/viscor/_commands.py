@@ -7,14 +7,18 @@ arguments are the CLI's options with '-' written '_' (gravity=9.8,
 youngs_modulus='2e11', target_e='0.9'); None leaves an input out.
 """
 
+import contextlib
 import csv
 import json
 import os
+import signal
 import subprocess
+import threading
 
 from . import _viscor
 from ._viscor import InvalidParameter
 from ._inputs import check_digits, law_texts, number_text, spec_json
+from ._progress import progress_reporter
 from ._result import Result
 from ._table import Table
 
@@ -193,7 +197,8 @@ def scene(file, out=None, *, error_maps=None):
     return os.fspath(out)
 
 
-def table(spec, out, *, resume=False, shard=None, threads=None, quiet=True, sticking=False):
+def table(spec, out=None, *, resume=False, shard=None, threads=None, quiet=True, sticking=False, progress=True,
+          estimate=False):
     """A certified reference table from a grid spec (the table job, as ``viscor table
     SPEC -o OUT``, docs/tables.md): writes OUT (CSV) and OUT.json (its sidecar).
 
@@ -204,8 +209,15 @@ def table(spec, out, *, resume=False, shard=None, threads=None, quiet=True, stic
     the path OUT (a str, as before) with the table's columns as NumPy arrays
     (``t.column('e')``) and as exact decimal strings (``t.strings('e')``).
     sticking=True computes sticking thresholds (``viscor table sticking``). The work
-    runs without the GIL; Ctrl-C stops it after the rows in progress, which are kept:
-    call again with resume=True to finish."""
+    runs without the GIL; Ctrl-C, and SIGTERM (a batch scheduler's) while the call
+    runs in the main thread, stop it after the rows in progress, which are kept, the
+    output's lock released, and raise KeyboardInterrupt: call again with resume=True to
+    finish. progress=True shows a progress bar (tqdm, where installed, on a terminal);
+    a callable(done, total) is called instead, about every 0.2 s.
+    estimate=True computes nothing and returns the estimate of the run as a Result
+    (``viscor table SPEC --estimate``): rows, cpu_time_s, wall_time_s at `threads`
+    (default: every core) for `shard`, and per law its rows and cpu_time_per_row_s
+    (out is not needed)."""
     q = _viscor.TableRequest()
     if isinstance(spec, dict):
         q.spec_text = spec_json(spec)
@@ -213,8 +225,7 @@ def table(spec, out, *, resume=False, shard=None, threads=None, quiet=True, stic
     else:
         q.spec_name = os.fspath(spec)
         q.from_file = True
-    q.output = os.fspath(out)
-    for name, value in (("resume", resume), ("quiet", quiet), ("sticking", sticking)):
+    for name, value in (("resume", resume), ("quiet", quiet), ("sticking", sticking), ("estimate", estimate)):
         if not isinstance(value, bool):
             raise TypeError(f"{name} must be True or False, got {value!r}")
     q.resume, q.quiet, q.sticking = resume, quiet, sticking
@@ -224,8 +235,39 @@ def table(spec, out, *, resume=False, shard=None, threads=None, quiet=True, stic
         if isinstance(threads, bool) or not isinstance(threads, int):
             raise TypeError(f"threads must be a whole number, got {threads!r}")
         q.threads = threads
-    _viscor.table(q)
+    if estimate:
+        if sticking or resume:
+            raise InvalidParameter("estimate=True is for a CoR table run: give it without sticking and resume")
+        return Result(_viscor.table_estimate(q))
+    if out is None:
+        raise TypeError("table() needs the output file out (or estimate=True)")
+    q.output = os.fspath(out)
+    q.progress = progress_reporter(progress, "row", "viscor table")
+    try:
+        with _sigterm_interrupts():
+            _viscor.table(q)
+    finally:
+        q.progress.close()
     return Table(q.output)
+
+
+@contextlib.contextmanager
+def _sigterm_interrupts():
+    """SIGTERM raises KeyboardInterrupt for the duration, as Ctrl-C does, so that a
+    table run stops after its rows in progress and keeps them (signal handlers can only
+    be set from the main thread: elsewhere, SIGTERM keeps its handler)."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+
+    def interrupt(signum, frame):
+        raise KeyboardInterrupt("SIGTERM")
+
+    previous = signal.signal(signal.SIGTERM, interrupt)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGTERM, previous if previous is not None else signal.SIG_DFL)
 
 
 def read_table(path):

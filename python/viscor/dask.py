@@ -26,6 +26,7 @@ from . import _viscor
 from ._commands import Points, cor_points as _cor_points, table as _table
 from ._evaluate import Evaluation, evaluate as _evaluate
 from ._inputs import spec_json
+from ._progress import progress_reporter
 from ._result import Result
 from ._table import Table
 
@@ -45,7 +46,7 @@ def _shard_task(spec_text, index, count, sticking):
     """On a worker: one shard of the table in a scratch directory; returns its files' text."""
     with tempfile.TemporaryDirectory(prefix="viscor-shard-", dir=_scratch_root()) as scratch:
         out = os.path.join(scratch, f"shard-{index}-of-{count}.csv")
-        _table(json.loads(spec_text), out, shard=(index, count), threads=1, sticking=sticking)
+        _table(json.loads(spec_text), out, shard=(index, count), threads=1, sticking=sticking, progress=False)
         with open(out) as f:
             csv_text = f.read()
         with open(out + ".json") as f:
@@ -83,7 +84,7 @@ def _spec_text(spec):
         return f.read()
 
 
-def table(spec, out, client, *, shards=None, sticking=False, retries=2):
+def table(spec, out, client, *, shards=None, sticking=False, retries=2, progress=True):
     """A certified table of a spec (a file or a dict, as viscor.table) computed on the
     workers of `client`, one task per shard, merged into `out` (and `out.json`).
 
@@ -92,7 +93,9 @@ def table(spec, out, client, *, shards=None, sticking=False, retries=2):
     same arguments computes only the missing ones (with another shard count, the old
     shards are discarded with a warning). The call holds the lock of that directory
     (a second call on the same output stops at once) and the merge holds out's lock,
-    as `viscor table merge` does. Returns a Table (as viscor.table).
+    as `viscor table merge` does. progress=True shows the finished shards as a progress
+    bar (tqdm, where installed, on a terminal); a callable(done, total) is called
+    instead. Returns a Table (as viscor.table).
     """
     from distributed import as_completed
 
@@ -112,10 +115,16 @@ def table(spec, out, client, *, shards=None, sticking=False, retries=2):
         paths = [os.path.join(kept, f"shard-{i}-of-{shards}.csv") for i in range(shards)]
         missing = [i for i in range(shards) if not (os.path.exists(paths[i]) and os.path.exists(paths[i] + ".json"))]
         futures = [client.submit(_shard_task, text, i, shards, sticking, retries=retries, pure=False) for i in missing]
-        for future in as_completed(futures):
-            index, csv_text, sidecar_text = future.result()
-            # both or neither, through the library's writer (exclusive temporaries, checked writes)
-            _viscor.write_together([(paths[index] + ".json", sidecar_text), (paths[index], csv_text)])
+        report = progress_reporter(progress, "shard", "viscor.dask.table")
+        try:
+            report(shards - len(missing), shards)
+            for done, future in enumerate(as_completed(futures), start=shards - len(missing) + 1):
+                index, csv_text, sidecar_text = future.result()
+                # both or neither, through the library's writer (exclusive temporaries, checked writes)
+                _viscor.write_together([(paths[index] + ".json", sidecar_text), (paths[index], csv_text)])
+                report(done, shards)
+        finally:
+            report.close()
         _viscor.merge_tables(paths, out)
         for path in paths:
             for p in (path, path + ".json"):
@@ -133,21 +142,27 @@ def _chunks(n, size):
     return [(start, min(n, start + size)) for start in range(0, n, size)]
 
 
-def cor_points(points, client, *, chunk=64, retries=2, **options):
+def cor_points(points, client, *, chunk=64, retries=2, progress=True, **options):
     """viscor.cor_points over the workers of `client`, `chunk` points per task; the
-    options are cor_points's (digits, method, tolerance, max_steps). Returns Points
-    in input order, as one process would."""
+    options are cor_points's (digits, certified_digits, method, tolerance, max_steps).
+    progress as in table (counting points). Returns Points in input order, as one
+    process would."""
     if isinstance(points, (str, os.PathLike)):  # JSON lines; a CSV file: read it into dicts first
         with open(os.fspath(points)) as f:
             points = [json.loads(line) for line in f if line.strip()]
     futures = [client.submit(_points_task, points[a:b], options, retries=retries, pure=False)
                for a, b in _chunks(len(points), chunk)]
     results = Points()
-    for (a, _), future in zip(_chunks(len(points), chunk), futures):
-        for fields in future.result():
-            if "line" in fields:
-                fields["line"] = fields["line"] + a  # the line in the whole batch, not in the chunk
-            results.append(Result(fields))
+    report = progress_reporter(progress, "point", "viscor.dask.cor_points")
+    try:
+        for (a, b), future in zip(_chunks(len(points), chunk), futures):
+            for fields in future.result():
+                if "line" in fields:
+                    fields["line"] = fields["line"] + a  # the line in the whole batch, not in the chunk
+                results.append(Result(fields))
+            report(b, len(points))
+    finally:
+        report.close()
     return results
 
 

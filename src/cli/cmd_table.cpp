@@ -1,5 +1,6 @@
 // viscor table: certified reference tables from a grid spec.
 //   viscor table SPEC.json -o OUT.csv [--resume] [--shard i/N] [--threads N] [--quiet]
+//   viscor table SPEC.json --estimate [--shard i/N] [--threads N]
 //   viscor table merge A.csv B.csv ... -o OUT.csv
 //   viscor table sticking SPEC.json -o OUT.csv [--resume] [--shard i/N] [--threads N] [--quiet]
 // The options of the table jobs (include/viscor/jobs/table_jobs.hpp), which do the work.
@@ -7,8 +8,12 @@
 #include "command_registry.hpp"
 #include "test_hooks.hpp"
 
+#include <viscor/jobs/table_estimate.hpp>
+#include <viscor/jobs/table_estimate_render.hpp>
 #include <viscor/jobs/table_jobs.hpp>
 #include <viscor/jobs/table_spec.hpp>
+
+#include <iostream>
 
 #include <memory>
 
@@ -28,6 +33,16 @@ struct run_options {
     app.add_option("--shard", shard_text, "compute only shard i of N (0 <= i < N): rows with index % N == i");
     app.add_option("--threads", run.threads, "worker threads (default: all cores)")->capture_default_str();
     app.add_flag("--quiet", run.quiet, "no progress output");
+  }
+
+  /// The estimate of the run (jobs/table_estimate.hpp): nothing is computed or written.
+  void estimate() const {
+    if (spec_path.empty()) throw invalid_parameter("viscor table --estimate needs a spec file: viscor table SPEC.json --estimate");
+    if (run.resume) throw invalid_parameter("--estimate computes nothing: give it without --resume");
+    if (run.threads < 1 || run.threads > 4096)
+      throw invalid_parameter("--threads must be from 1 to 4096, got " + std::to_string(run.threads));
+    const shard part = shard_text.empty() ? shard{} : shard::parse(shard_text);
+    std::cout << render::table_estimate_text(estimate_cor_table(read_spec_json(spec_path), part, run.threads));
   }
 
   /// Checks the options, then reads the spec.
@@ -55,6 +70,10 @@ struct merge_options {
 void setup(CLI::App& app) {
   auto table = std::make_shared<run_options>();
   table->add_to(app);
+  auto estimate = std::make_shared<bool>(false);
+  app.add_flag("--estimate", *estimate,
+               "print the rows and the expected CPU and wall time (at --threads, of --shard) from the measured cost "
+               "per row, and compute nothing (-o not needed)");
 
   CLI::App* merge = app.add_subcommand("merge", "join shard tables (--shard i/N) into the full table");
   auto merging = std::make_shared<merge_options>();
@@ -73,8 +92,9 @@ void setup(CLI::App& app) {
   });
 
   app.require_subcommand(0, 1);
-  app.callback([table, &app] {
+  app.callback([table, estimate, &app] {
     if (!app.get_subcommands().empty()) return;
+    if (*estimate) return table->estimate();
     const auto [spec, run] = table->read("viscor table");
     make_cor_table(spec, run);
   });

@@ -267,11 +267,17 @@ inline void compute_pending_rows(const table_job& job, const earlier_sessions& e
   parallel_for_options options;
   options.threads = static_cast<unsigned>(std::max(1, job.threads));
   options.keep_going = [&] { return !stop_requested && detail::interrupts == 0; };
+  const auto report = [&](std::size_t rows_finished) {
+    if (job.on_progress) job.on_progress(done.size() + rows_finished, job.indices.size());
+  };
   options.poll = [&] {
+    std::size_t rows_finished = 0;
     {
       std::lock_guard lock(mutex);
       progress.update(finished);
+      rows_finished = finished;
     }
+    report(rows_finished);
     if (job.should_stop && !stop_requested && job.should_stop()) stop_requested = true;
     return !stop_requested && detail::interrupts == 0;
   };
@@ -289,6 +295,7 @@ inline void compute_pending_rows(const table_job& job, const earlier_sessions& e
       },
       options);
   progress.update(finished, /*final=*/true);
+  report(finished);
 
   const bool interrupted = detail::interrupts > 0 || stop_requested;
   if (!run.failed() && !interrupted) return;

@@ -14,8 +14,10 @@ import unittest
 
 import viscor
 from viscor._inputs import spec_json
-from viscor_test_support import (CLI, REFERENCE_DATA, SOURCE_DIR, linear_law_e, mpmath, numpy as np, reference_rows,
-                                 skip_or_fail)
+from viscor_test_support import (CLI, REFERENCE_DATA, SOURCE_DIR, linear_law_e, mpmath, numpy as np, optional_module,
+                                 reference_rows, skip_or_fail)
+
+tqdm = optional_module("tqdm", "python3-tqdm")
 
 
 def cli_json(*args):
@@ -291,6 +293,69 @@ class TableJobSameAsTheCli(unittest.TestCase):
             self.assertGreater(t.sidecar["rows_from_earlier_sessions"], 0)
             with open(out, "rb") as f:
                 self.assertEqual(f.read(), self.cli_table(tmp, spec))
+
+    def test_sigterm_keeps_the_finished_rows_and_releases_the_lock(self):
+        """A batch scheduler's SIGTERM to a Python process running viscor.table: the
+        finished rows stay in OUT.partial, the lock file goes, resume=True finishes the
+        same table as the CLI's."""
+        import signal
+        import sys
+        import time
+        spec = dict(self.SPEC, laws=["tsuji", "hunt_crossley"], digits=50, gamma=[{"from": 0, "to": 1, "count": 41}])
+        with tempfile.TemporaryDirectory() as tmp:
+            out = os.path.join(tmp, "py.csv")
+            script = f"import viscor\nviscor.table({spec!r}, {out!r}, threads=1)\n"
+            env = dict(os.environ, PYTHONPATH=os.pathsep.join(p for p in sys.path if p))
+            child = subprocess.Popen([sys.executable, "-c", script], env=env, stderr=subprocess.PIPE, text=True)
+            try:
+                deadline = time.monotonic() + 60
+                while time.monotonic() < deadline and child.poll() is None:  # a row or more finished
+                    if os.path.exists(out + ".partial") and os.path.getsize(out + ".partial") > 200:
+                        break
+                    time.sleep(0.02)
+                self.assertIsNone(child.poll(), "the table finished before it could be interrupted")
+                self.assertTrue(os.path.exists(out + ".lock"))
+                child.send_signal(signal.SIGTERM)
+                _, err = child.communicate(timeout=60)
+            finally:
+                if child.poll() is None:
+                    child.kill()
+            self.assertNotEqual(child.returncode, 0)
+            self.assertIn("KeyboardInterrupt: interrupted: ", err)
+            self.assertIn("resume=True", err)
+            self.assertTrue(os.path.exists(out + ".partial"))
+            self.assertFalse(os.path.exists(out + ".lock"))  # released: the run's own lock file is removed
+            self.assertFalse(os.path.exists(out))
+            t = viscor.table(spec, out, threads=2, resume=True)
+            self.assertGreater(t.sidecar["rows_from_earlier_sessions"], 0)
+            self.assertLess(t.sidecar["rows_from_earlier_sessions"], 164)
+            with open(out, "rb") as f:
+                self.assertEqual(f.read(), self.cli_table(tmp, spec))
+
+    def test_progress_is_reported(self):
+        calls = []
+        with tempfile.TemporaryDirectory() as tmp:
+            viscor.table(self.SPEC, os.path.join(tmp, "py.csv"), threads=1, progress=lambda d, t: calls.append((d, t)))
+        self.assertTrue(calls)
+        self.assertEqual(calls[-1], (20, 20))
+        self.assertEqual([d for d, _ in calls], sorted(d for d, _ in calls))
+        with self.assertRaises(TypeError):
+            viscor.table(self.SPEC, "never.csv", progress="yes")
+        with tempfile.TemporaryDirectory() as tmp:  # a failing display does not stop the run
+            t = viscor.table(self.SPEC, os.path.join(tmp, "py.csv"), threads=1, progress=lambda d, t: 1 / 0)
+            self.assertEqual(len(t.column("e")), 20)
+        from viscor._progress import progress_reporter
+        if tqdm is None:
+            return skip_or_fail(self, "tqdm (python3-tqdm)")
+        import io
+        from viscor._progress import _Bar
+        self.assertIsInstance(progress_reporter(True, "row", "test"), _Bar)  # drawn only on a terminal
+        drawn = io.StringIO()
+        bar = _Bar(lambda **kw: tqdm.tqdm(**dict(kw, disable=False, file=drawn)), "row", "test")
+        bar(3, 20)
+        bar(20, 20)
+        bar.close()
+        self.assertIn("20/20", drawn.getvalue())
 
 
 @unittest.skipUnless(CLI, "VISCOR_CLI not set")

@@ -75,8 +75,10 @@ class OnTwoWorkers(unittest.TestCase):
         with tempfile.TemporaryDirectory() as tmp:
             one, spread = self.one_process_and_a_kept_shard(tmp, 0, 3)
             open(os.path.join(spread + ".shards", "shard-1-of-2.csv.tmp.999999"), "w").close()  # a killed call's
+            shown = []
             with self.assertWarnsRegex(UserWarning, "discarding 3 files"):
-                viscor.dask.table(SPEC, spread, self.client, shards=2)
+                viscor.dask.table(SPEC, spread, self.client, shards=2, progress=lambda d, t: shown.append((d, t)))
+            self.assertEqual(shown, [(0, 2), (1, 2), (2, 2)])  # the finished shards, as they come
             with open(one, "rb") as a, open(spread, "rb") as b:
                 self.assertEqual(a.read(), b.read())
             self.assertFalse(os.path.exists(spread + ".shards"))
@@ -119,7 +121,9 @@ class OnTwoWorkers(unittest.TestCase):
     def test_points_and_evaluate_equal_one_process(self):
         points = [{"law": "tsuji", "gamma": str(0.01 * k), "g": "0.5"} for k in range(10)] + \
                  [{"law": "linear", "gamma": "-1"}]
-        mine = viscor.dask.cor_points(points, self.client, chunk=3, digits=20)
+        shown = []
+        mine = viscor.dask.cor_points(points, self.client, chunk=3, digits=20, progress=lambda d, t: shown.append((d, t)))
+        self.assertEqual(shown[-1], (len(points), len(points)))
         ref = viscor.cor_points(points, digits=20)
         self.assertEqual([without_timings(r) for r in mine], [without_timings(r) for r in ref])
         gamma = np.linspace(1e-3, 0.2, 500)

@@ -46,6 +46,9 @@ struct table_job {
   /// Asked about every 0.2 s from the calling thread: true stops the run like an
   /// interrupt (the finished rows are kept). The Python module checks Ctrl-C here.
   std::function<bool()> should_stop;
+  /// Called with (rows done, rows of the run) from the calling thread when should_stop
+  /// is asked, and once at the end: a front end's own progress display (Python's tqdm).
+  std::function<void(std::size_t, std::size_t)> on_progress;
   /// A test seam: after this many rows of this session the run interrupts itself,
   /// as a Ctrl-C would; -1: never.
   long long stop_after_rows = -1;
@@ -68,6 +71,7 @@ table_job new_table_job(const RunOptions& run, table_kind kind, bool proven, con
   j.quiet = run.quiet;
   j.handle_signals = run.handle_signals;
   j.should_stop = run.should_stop;
+  if constexpr (requires { run.on_progress; }) j.on_progress = run.on_progress;
   j.stop_after_rows = run.stop_after_rows;
   json& p = j.provenance;
   p["viscor_version"] = VISCOR_VERSION;
