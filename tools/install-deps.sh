@@ -32,6 +32,8 @@ packages=(
   slurm-wlm munge           # a one-node Slurm cluster for the job array of docs/tables.md (tests/slurm_table_test.sh)
   python3-distributed       # viscor.dask: tables, points and evaluate on a Dask cluster (tests/python/test_dask.py)
   python3-tqdm              # progress bars of viscor.table and viscor.dask (docs/python.md)
+  libnetcdf-dev             # the NetCDF form of tables: viscor table --format netcdf (docs/tables.md)
+  python3-xarray python3-netcdf4  # Table.to_xarray() and reading NetCDF back (docs/python.md)
   clang libclang-rt-14-dev  # libFuzzer and clang's sanitizers: tests/fuzz (docs/robustness.md)
   libc++-14-dev libc++abi-14-dev  # the fuzzers' C++ library (tests/fuzz/CMakeLists.txt says why)
 )

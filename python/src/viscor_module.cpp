@@ -19,6 +19,8 @@
 #include <viscor/jobs/cor_render.hpp>
 #include <viscor/jobs/point_batch.hpp>
 #include <viscor/jobs/scene_job.hpp>
+#include <viscor/jobs/netcdf_file.hpp>
+#include <viscor/jobs/table_dataset.hpp>
 #include <viscor/jobs/table_estimate.hpp>
 #include <viscor/jobs/table_estimate_render.hpp>
 #include <viscor/jobs/table_jobs.hpp>
@@ -48,6 +50,7 @@
 #include <optional>
 #include <sstream>
 #include <thread>
+#include <variant>
 #include <vector>
 
 namespace py = pybind11;
@@ -173,6 +176,7 @@ struct table_request {
   bool from_file = false, sticking = false, resume = false, quiet = true;
   int threads = -1;  // -1: every core
   py::object progress = py::none();  // callable(done, total), or None
+  bool netcdf = false;                // also the NetCDF form (format="netcdf")
 };
 
 // Runs a table job without the GIL. Ctrl-C in Python stops it after the rows in
@@ -188,6 +192,7 @@ std::string table(const table_request& q) {
   run.resume = q.resume;
   if (q.threads != -1) run.threads = q.threads;
   run.quiet = q.quiet;
+  run.netcdf = q.netcdf;
   run.should_stop = [] {
     py::gil_scoped_acquire gil;
     // The exception stays set: a signal's handler may also have run in the progress callback.
@@ -256,6 +261,50 @@ py::tuple table_columns(const std::string& path) {
   py::list rows;
   for (const auto& r : t.rows) rows.append(py::cast(r.fields));
   return py::make_tuple(header, rows);
+}
+
+// The dataset form of a table file (jobs/table_dataset.hpp), as Table.to_xarray()
+// takes it: dims {name: size}; coords and data_vars [(name, dims, values, attrs)],
+// numbers as NumPy arrays of the grid's shape, texts as flat lists; attrs.
+py::dict table_dataset(const std::string& path) {
+  const jobs::table_dataset d = jobs::read_table_dataset(path);
+  py::dict dims;
+  for (const auto& [name, size] : d.dimensions) dims[py::str(name)] = size;
+  const auto shape_of = [&](const jobs::dataset_array& a) {
+    std::vector<py::ssize_t> shape;
+    for (const std::string& dim : a.dims)
+      for (const auto& [name, size] : d.dimensions)
+        if (name == dim) shape.push_back(static_cast<py::ssize_t>(size));
+    return shape;
+  };
+  const auto arrays = [&](const std::vector<jobs::dataset_array>& list) {
+    py::list out;
+    for (const jobs::dataset_array& a : list) {
+      py::dict attrs;
+      for (const auto& [name, value] : a.attributes) attrs[py::str(name)] = value;
+      py::object values;
+      switch (a.kind) {
+        case jobs::dataset_array::type::float64:
+          values = py::array_t<double>(shape_of(a), a.numbers.data());
+          break;
+        case jobs::dataset_array::type::int32:
+          values = py::array_t<std::int32_t>(shape_of(a), a.integers.data());
+          break;
+        case jobs::dataset_array::type::text: values = py::cast(a.texts); break;
+      }
+      out.append(py::make_tuple(a.name, py::tuple(py::cast(a.dims)), values, attrs));
+    }
+    return out;
+  };
+  py::dict attrs;
+  for (const auto& [name, value] : d.attributes)
+    std::visit([&, key = name](const auto& v) { attrs[py::str(key)] = v; }, value);
+  py::dict out;
+  out["dims"] = dims;
+  out["coords"] = arrays(d.coordinates);
+  out["data_vars"] = arrays(d.variables);
+  out["attrs"] = attrs;
+  return out;
 }
 
 // ---- evaluate over arrays ----
@@ -389,11 +438,15 @@ PYBIND11_MODULE(_viscor, m) {
       .def_readwrite("resume", &table_request::resume)
       .def_readwrite("quiet", &table_request::quiet)
       .def_readwrite("threads", &table_request::threads)
-      .def_readwrite("progress", &table_request::progress);
+      .def_readwrite("progress", &table_request::progress)
+      .def_readwrite("netcdf", &table_request::netcdf);
   m.def("table", &vp::table, py::arg("request"),
         "Runs a table job (jobs/table_jobs.hpp) without the GIL; returns the output path.");
   m.def("table_estimate", &vp::table_estimate, py::arg("request"),
         "The estimate of a table run (jobs/table_estimate.hpp) as a dict; computes nothing.");
+  m.def("table_dataset", &vp::table_dataset, py::arg("path"),
+        "The dataset form of a CoR table file (jobs/table_dataset.hpp): dims, coords, data_vars, attrs.");
+  m.def("netcdf_available", &viscor::jobs::netcdf_available, "Whether this build writes NetCDF (libnetcdf).");
   m.def("table_columns", &vp::table_columns, py::arg("path"),
         "(column names, rows of decimal strings) of a viscor table file, checked by the library's reader.");
   m.def(

@@ -198,7 +198,7 @@ def scene(file, out=None, *, error_maps=None):
 
 
 def table(spec, out=None, *, resume=False, shard=None, threads=None, quiet=True, sticking=False, progress=True,
-          estimate=False):
+          estimate=False, format="csv"):
     """A certified reference table from a grid spec (the table job, as ``viscor table
     SPEC -o OUT``, docs/tables.md): writes OUT (CSV) and OUT.json (its sidecar).
 
@@ -214,6 +214,8 @@ def table(spec, out=None, *, resume=False, shard=None, threads=None, quiet=True,
     output's lock released, and raise KeyboardInterrupt: call again with resume=True to
     finish. progress=True shows a progress bar (tqdm, where installed, on a terminal);
     a callable(done, total) is called instead, about every 0.2 s.
+    format="netcdf" also writes OUT's NetCDF form (OUT.csv -> OUT.nc, as ``viscor table
+    --format netcdf``), published with the table; Table.to_xarray() gives the same.
     estimate=True computes nothing and returns the estimate of the run as a Result
     (``viscor table SPEC --estimate``): rows, cpu_time_s, wall_time_s at `threads`
     (default: every core) for `shard`, and per law its rows and cpu_time_per_row_s
@@ -235,6 +237,9 @@ def table(spec, out=None, *, resume=False, shard=None, threads=None, quiet=True,
         if isinstance(threads, bool) or not isinstance(threads, int):
             raise TypeError(f"threads must be a whole number, got {threads!r}")
         q.threads = threads
+    if format not in ("csv", "netcdf"):
+        raise InvalidParameter(f"format must be 'csv' or 'netcdf', got {format!r}")
+    q.netcdf = format == "netcdf"
     if estimate:
         if sticking or resume:
             raise InvalidParameter("estimate=True is for a CoR table run: give it without sticking and resume")

@@ -61,6 +61,31 @@ class Table(str):
         import numpy
         return numpy.array([float(v) if v != "" else float("nan") for v in values], dtype=numpy.float64)
 
+    def to_xarray(self):
+        """The table as an xarray.Dataset over its axes (law, g, gamma): e, one_minus_e,
+        contact_time, max_compression (float64, with their exact decimals as NAME_exact
+        strings), outcome, certified_digits, method, and for a proven table the
+        enclosures (rounded outwards, so still bounds), proven_digits and outcome_proven;
+        the sidecar's provenance (version, commit, spec, method, precision, checksums)
+        as attributes. The layout is the library's (jobs/table_dataset.hpp), the same as
+        the NetCDF form that table(..., format="netcdf") writes. Needs python3-xarray."""
+        import numpy
+        import xarray
+        d = _viscor.table_dataset(str(self))
+
+        def variables(arrays):
+            out = {}
+            for name, dims, values, attrs in arrays:
+                if isinstance(values, list):  # texts: object arrays, as xarray reads NetCDF strings
+                    shape = tuple(d["dims"][dim] for dim in dims)
+                    flat = numpy.empty(len(values), dtype=object)
+                    flat[:] = values
+                    values = flat.reshape(shape)
+                out[name] = (dims, values, attrs)
+            return out
+
+        return xarray.Dataset(data_vars=variables(d["data_vars"]), coords=variables(d["coords"]), attrs=d["attrs"])
+
     @property
     def sidecar(self):
         """The sidecar OUT.json (provenance) as a dict."""

@@ -1,13 +1,16 @@
 // viscor table: certified reference tables from a grid spec.
 //   viscor table SPEC.json -o OUT.csv [--resume] [--shard i/N] [--threads N] [--quiet]
 //   viscor table SPEC.json --estimate [--shard i/N] [--threads N]
+//   viscor table SPEC.json -o OUT.csv --format netcdf       (also OUT.nc)
 //   viscor table merge A.csv B.csv ... -o OUT.csv
+//   viscor table netcdf TABLE.csv [-o TABLE.nc]
 //   viscor table sticking SPEC.json -o OUT.csv [--resume] [--shard i/N] [--threads N] [--quiet]
 // The options of the table jobs (include/viscor/jobs/table_jobs.hpp), which do the work.
 #include "cli_common.hpp"
 #include "command_registry.hpp"
 #include "test_hooks.hpp"
 
+#include <viscor/jobs/netcdf_file.hpp>
 #include <viscor/jobs/table_estimate.hpp>
 #include <viscor/jobs/table_estimate_render.hpp>
 #include <viscor/jobs/table_jobs.hpp>
@@ -74,6 +77,22 @@ void setup(CLI::App& app) {
   app.add_flag("--estimate", *estimate,
                "print the rows and the expected CPU and wall time (at --threads, of --shard) from the measured cost "
                "per row, and compute nothing (-o not needed)");
+  auto format = std::make_shared<std::string>("csv");
+  app.add_option("--format", *format,
+                 "csv: OUT.csv and its sidecar OUT.csv.json; netcdf: also OUT.nc, their NetCDF form for xarray "
+                 "(docs/tables.md, 'NetCDF and xarray')")
+      ->check(CLI::IsMember({"csv", "netcdf"}))
+      ->capture_default_str();
+
+  CLI::App* netcdf = app.add_subcommand("netcdf", "the NetCDF form of a CoR table file (its sidecar beside it)");
+  auto converting = std::make_shared<std::pair<std::string, std::string>>();
+  netcdf->add_option("table", converting->first, "the table TABLE.csv (with TABLE.csv.json)")->required();
+  netcdf->add_option("-o,--output", converting->second, "the NetCDF file (default: TABLE.nc)")
+      ->check(output_options::regular_output_file());
+  netcdf->callback([converting] {
+    const std::string out = converting->second.empty() ? netcdf_path_for(converting->first) : converting->second;
+    write_table_netcdf(converting->first, out);
+  });
 
   CLI::App* merge = app.add_subcommand("merge", "join shard tables (--shard i/N) into the full table");
   auto merging = std::make_shared<merge_options>();
@@ -92,10 +111,11 @@ void setup(CLI::App& app) {
   });
 
   app.require_subcommand(0, 1);
-  app.callback([table, estimate, &app] {
+  app.callback([table, estimate, format, &app] {
     if (!app.get_subcommands().empty()) return;
     if (*estimate) return table->estimate();
-    const auto [spec, run] = table->read("viscor table");
+    auto [spec, run] = table->read("viscor table");
+    run.netcdf = *format == "netcdf";
     make_cor_table(spec, run);
   });
 }

@@ -3,6 +3,8 @@
 #include <viscor/jobs/table_runner.hpp>
 
 #include <viscor/jobs/files.hpp>
+#include <viscor/jobs/netcdf_file.hpp>
+#include <viscor/jobs/table_dataset.hpp>
 #include <viscor/jobs/parallel_for.hpp>
 
 #include <algorithm>
@@ -318,6 +320,23 @@ inline void compute_pending_rows(const table_job& job, const earlier_sessions& e
   throw table_interrupted(done.size() + finished, job.indices.size(), files.partial);
 }
 
+/// The NetCDF form of a table's text and sidecar (jobs/netcdf_file.hpp).
+inline output_file netcdf_output(const table_job& job, const std::string& table_text, const std::string& sidecar_text) {
+  return {netcdf_path_for(job.output), netcdf_file_bytes(table_dataset_of(table_text, sidecar_text, job.output))};
+}
+
+/// A NetCDF form is asked for where it can be written: a whole CoR table, a build with libnetcdf.
+inline void check_netcdf_request(const table_job& job) {
+  if (!job.netcdf) return;
+  if (job.kind != table_kind::cor)
+    throw invalid_parameter("format netcdf: a sticking-threshold table has no (law, g, gamma) grid of e; NetCDF is "
+                            "for CoR tables");
+  if (job.provenance.contains("shard") && !job.provenance["shard"].is_null())
+    throw invalid_parameter("format netcdf: a shard is not the whole grid; write the NetCDF form of the merged "
+                            "table (viscor table netcdf)");
+  require_netcdf();
+}
+
 /// Every row done: sorts them into grid order and publishes the table and its sidecar
 /// together, then removes the partial files.
 inline table_run_summary publish_table(const table_job& job, const table_format& format,
@@ -346,7 +365,9 @@ inline table_run_summary publish_table(const table_job& job, const table_format&
   sidecar["sessions"] = earlier.meta.value("sessions", 0) + 1;
   sidecar["rows_from_earlier_sessions"] = earlier.done.size();
 
-  write_together({{files.table, text}, {files.sidecar, sidecar.dump(2) + "\n"}});
+  std::vector<output_file> outputs{{files.table, text}, {files.sidecar, sidecar.dump(2) + "\n"}};
+  if (job.netcdf) outputs.push_back(netcdf_output(job, outputs[0].body, outputs[1].body));
+  write_together(outputs);
   detail::remove_file(files.partial);
   detail::remove_file(files.partial_meta);
   if (!job.quiet)
@@ -370,9 +391,14 @@ table_run_summary run_table_job(const table_job& job) {
   const table_format format{job.kind, job.proven};
   const detail::run_files files(job.output);
   detail::check_run_files(files);
+  detail::check_netcdf_request(job);
   const output_lock lock(job.output);  // no other run may be writing these files
   const detail::earlier_sessions earlier = detail::resume_or_start(job, format, table_fingerprint(job.provenance), files);
   if (earlier.already_complete) {
+    if (job.netcdf) {  // the NetCDF form of the finished table
+      const std::string table_text = read_checked_file<error>(files.table, "table");
+      write_together({detail::netcdf_output(job, table_text, read_checked_file<error>(files.sidecar, "table sidecar"))});
+    }
     table_run_summary summary;
     summary.rows = job.indices.size();
     summary.already_complete = true;

@@ -227,8 +227,9 @@ struct table_format {
 
   /// The format of a table file, from its header line (the plain formats' reader
   /// reports any other header).
-  static table_format of_file(const std::string& path) {
-    const std::string text = file_text(path);
+  static table_format of_file(const std::string& path) { return of_text(file_text(path)); }
+  /// The format of a table's text, from its header line.
+  static table_format of_text(const std::string& text) {
     const std::string first = text.substr(0, text.find('\n'));
     if (first == proven_table_header()) return {table_kind::cor, true};
     if (first == table_header(table_kind::sticking)) return {table_kind::sticking, false};

@@ -29,6 +29,7 @@ struct table_run_options {
   bool handle_signals = false;      ///< see table_job
   std::function<bool()> should_stop;  ///< see table_job
   std::function<void(std::size_t, std::size_t)> on_progress;  ///< see table_job
+  bool netcdf = false;                ///< see table_job
   long long stop_after_rows = -1;     ///< test seam, see table_job
   std::string certified_e_shift;      ///< test seam, see proven_fields
 };

@@ -49,6 +49,9 @@ struct table_job {
   /// Called with (rows done, rows of the run) from the calling thread when should_stop
   /// is asked, and once at the end: a front end's own progress display (Python's tqdm).
   std::function<void(std::size_t, std::size_t)> on_progress;
+  /// Also publish the table's NetCDF form (jobs/netcdf_file.hpp) at
+  /// netcdf_path_for(output), together with the table and its sidecar.
+  bool netcdf = false;
   /// A test seam: after this many rows of this session the run interrupts itself,
   /// as a Ctrl-C would; -1: never.
   long long stop_after_rows = -1;
@@ -72,6 +75,7 @@ table_job new_table_job(const RunOptions& run, table_kind kind, bool proven, con
   j.handle_signals = run.handle_signals;
   j.should_stop = run.should_stop;
   if constexpr (requires { run.on_progress; }) j.on_progress = run.on_progress;
+  if constexpr (requires { run.netcdf; }) j.netcdf = run.netcdf;
   j.stop_after_rows = run.stop_after_rows;
   json& p = j.provenance;
   p["viscor_version"] = VISCOR_VERSION;
