@@ -25,29 +25,16 @@ import argparse
 import csv
 import json
 import os
-import resource
 import statistics
-import subprocess
 import sys
 import tempfile
+
+from cost_measure import run_cpu  # CPU seconds of one command (tools/ is on the path)
 
 LAWS = ["linear", "hertz_linear_damping", "tsuji", "kuwabara_kono", "hunt_crossley"]
 DIGITS = [15, 18, 30, 33, 40, 50, 70, 100, 150]
 METHODS = ["certify", "proven"]
 GRID = {"gamma": [{"from": 0.01, "to": 0.1, "step": 0.01}], "g": [0, 0.05, 1]}
-
-
-def child_cpu():
-    r = resource.getrusage(resource.RUSAGE_CHILDREN)
-    return r.ru_utime + r.ru_stime
-
-
-def run_cpu(command, cwd):
-    before = child_cpu()
-    done = subprocess.run(command, cwd=cwd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
-    if done.returncode != 0:
-        sys.exit(f"cost_by_digits: {' '.join(command)} failed: {done.stderr.strip()}")
-    return child_cpu() - before
 
 
 def main():

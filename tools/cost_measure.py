@@ -40,7 +40,7 @@ def run_cpu(command, cwd):
     before = child_cpu()
     done = subprocess.run(command, cwd=cwd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
     if done.returncode != 0:
-        sys.exit(f"cost_measure: {' '.join(command)} failed: {done.stderr.strip()}")
+        sys.exit(f"{os.path.basename(sys.argv[0])}: {' '.join(command)} failed: {done.stderr.strip()}")
     return child_cpu() - before
 
 
