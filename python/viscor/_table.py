@@ -7,7 +7,7 @@ import os
 from . import _viscor
 
 # Columns that hold numbers; the others (law, outcome, method, ...) are text.
-_TEXT_COLUMNS = {"law", "alpha", "beta", "outcome", "method", "outcome_proven"}
+_TEXT_COLUMNS = {"law", "alpha", "beta", "outcome", "method", "outcome_proven", "bead", "contact", "wall"}
 
 
 class Table(str):

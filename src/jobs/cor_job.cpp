@@ -56,6 +56,13 @@ cor_result run_cor_at_precision(const cor_request& q) {
       side.length_scale = working_number::of(scales->length_scale);
       if (r.contact_time) side.contact_time_s = working_number::of(Real(*r.contact_time->as<Real>() * scales->time_scale));
       side.max_compression_m = working_number::of(Real(*r.max_compression.as<Real>() * scales->length_scale));
+      if (r.certified) {  // held in Real (certify<Real>); a value of another type stays unknown
+        const certified_result<working_number>& c = *r.certified;
+        if (const Real* t = c.contact_time ? c.contact_time->as<Real>() : nullptr)
+          side.certified_contact_time_s = working_number::of(Real(*t * scales->time_scale));
+        if (const Real* u = c.max_compression.as<Real>())
+          side.certified_max_compression_m = working_number::of(Real(*u * scales->length_scale));
+      }
       r.physical = std::move(side);
     }
     return r;

@@ -143,6 +143,9 @@ table_dataset table_dataset_of(const std::string& table_text, const std::string&
   if (format.kind != table_kind::cor)
     throw parse_error(table_name + ": a sticking-threshold table has no (law, g, gamma) grid of e; the dataset form "
                       "is for CoR tables");
+  if (format.physical)
+    throw parse_error(table_name + ": a table from a spec in SI has no (law, g, gamma) grid; its dataset form is "
+                      "not written yet (read its columns with Table.column)");
   const csv_table table = format.parse(table_text, table_name);
   json sidecar;
   try {

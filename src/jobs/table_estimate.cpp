@@ -89,11 +89,18 @@ table_estimate estimate_cor_table(const table_spec& table, const shard& part, in
   if (spec.threshold_digits > 0)
     throw parse_error(spec.source + ": field threshold_digits: the estimate is for CoR tables (viscor table), not "
                       "sticking thresholds");
-  const expanded_axes axes = expand(spec);
-  if (axes.gamma.empty()) throw parse_error(spec.source + ": field gamma: the table needs gamma values");
-  if (axes.g.empty()) throw parse_error(spec.source + ": field g: the table needs g values");
-  refuse_too_many_rows(spec, {static_cast<std::int64_t>(spec.laws.size()), static_cast<std::int64_t>(axes.g.size()),
-                             static_cast<std::int64_t>(axes.gamma.size())});
+  // Rows per law: the grid's g x gamma, or the product of the physical axes (a row in SI
+  // costs what a certified row at its scaled gamma and g does).
+  std::int64_t per_law = 0;
+  if (table.physical) {
+    per_law = physical_rows_per_law(*table.physical, expand(*table.physical));
+  } else {
+    const expanded_axes axes = expand(spec);
+    if (axes.gamma.empty()) throw parse_error(spec.source + ": field gamma: the table needs gamma values");
+    if (axes.g.empty()) throw parse_error(spec.source + ": field g: the table needs g values");
+    per_law = static_cast<std::int64_t>(axes.g.size() * axes.gamma.size());
+  }
+  refuse_too_many_rows(spec, {static_cast<std::int64_t>(spec.laws.size()), per_law});
   if (threads < 1 || threads > 4096)
     throw invalid_parameter(VISCOR_FIELD("threads") " must be from 1 to 4096, got " + std::to_string(threads));
   table_estimate out;
@@ -101,7 +108,6 @@ table_estimate estimate_cor_table(const table_spec& table, const shard& part, in
   out.working_digits = spec.digits;
   out.method = table.proven ? std::string("proven") : to_string(spec.method);
   out.threads = threads;
-  const std::int64_t per_law = static_cast<std::int64_t>(axes.g.size() * axes.gamma.size());
   for (std::size_t i = 0; i < spec.laws.size(); ++i) {
     law_estimate l;
     l.law = spec.laws[i];

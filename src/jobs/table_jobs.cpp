@@ -9,6 +9,7 @@
 #include <viscor/tables/reference_table.hpp>
 #include <viscor/tables/sticking_threshold.hpp>
 #include <viscor/tables/table_row.hpp>
+#include <viscor/jobs/physical_table.hpp>
 #include <viscor/jobs/proven_rows.hpp>
 
 #include <cstdint>
@@ -130,10 +131,23 @@ inline void require_proof(const table_spec& table) {
   for (const auto& law : spec.laws) require_provable(law, spec.source + ": field laws: " + law.describe());
 }
 
-/// The grid_key of every row of a table of kind `k` made from `table`, by index.
+/// The rows of a spec in SI (all of them, or those of `part`).
+inline std::vector<physical_point> physical_points_of(const table_spec& table, shard part = {}) {
+  const physical_axes& axes = *table.physical;
+  const expanded_physical_axes values = expand(axes);
+  refuse_too_many_rows(table.grid, {static_cast<std::int64_t>(table.grid.laws.size()),
+                                    physical_rows_per_law(axes, values)});
+  return physical_points(table.grid.laws, axes, values, part);
+}
+
+/// The key (table_format::key) of every row of a table of kind `k` made from `table`, by index.
 inline std::vector<std::string> grid_keys(const table_spec& table, table_kind k) {
-  const expanded_axes axes = expand(table.grid);
   std::vector<std::string> keys;
+  if (table.physical) {
+    for (const auto& p : physical_points_of(table)) keys.push_back(physical_key(*table.physical, p));
+    return keys;
+  }
+  const expanded_axes axes = expand(table.grid);
   auto put = [&keys](std::int64_t index, std::string key) {
     if (index >= static_cast<std::int64_t>(keys.size())) keys.resize(static_cast<std::size_t>(index) + 1);
     keys[static_cast<std::size_t>(index)] = std::move(key);
@@ -147,8 +161,34 @@ inline std::vector<std::string> grid_keys(const table_spec& table, table_kind k)
 
 }  // namespace detail
 
+namespace detail {
+
+/// A CoR table from a spec in SI: each row `viscor cor` of its inputs (physical_table.hpp).
+inline table_run_summary make_physical_table(const table_spec& table, const table_run_options& run) {
+  const grid_spec& spec = table.grid;
+  const auto points = std::make_shared<std::vector<physical_point>>(physical_points_of(table, run.part));
+  check_physical_rows(table, *points);  // every row's inputs before anything is written
+  const std::int64_t rows_total =
+      static_cast<std::int64_t>(spec.laws.size()) * physical_rows_per_law(*table.physical, expand(*table.physical));
+  table_job job = make_job(run, table_kind::cor, table, rows_total);
+  job.physical = true;
+  job.provenance["columns"] = table_format{table_kind::cor, false, true}.header();
+  job.provenance["scaling"] = "each row as viscor cor scales the same physical inputs (include/viscor/core/scaling.hpp); "
+                              "gamma and g are the scaled values in the digits that round-trip at the row's working "
+                              "precision";
+  for (const auto& p : *points) job.indices.push_back(p.index);
+  const auto axes = std::make_shared<physical_axes>(*table.physical);
+  const table_settings settings = table_settings::from(spec);
+  job.compute_line = [points, axes, settings](std::size_t i) { return physical_row_line(*axes, (*points)[i], settings); };
+  job.expected_grid_key = [points, axes](std::size_t i) { return physical_key(*axes, (*points)[i]); };
+  return run_table_job(job);
+}
+
+}  // namespace detail
+
 table_run_summary make_cor_table(const table_spec& table, const table_run_options& run) {
   detail::check_run_options(run, "viscor table");
+  if (table.physical) return detail::make_physical_table(table, run);
   const shard& part = run.part;
   const std::string& where = table.grid.source;
   const grid_spec& spec = table.grid;
@@ -264,7 +304,8 @@ std::size_t merge_tables(const std::vector<std::string>& input_paths, const std:
   const json reference = common(inputs.front().sidecar);
   const std::int64_t rows_total = reference.value("rows_total", std::int64_t(-1));
   for (const auto& in : inputs) {
-    if (in.table.kind != inputs.front().table.kind || in.format.proven != inputs.front().format.proven)
+    if (in.table.kind != inputs.front().table.kind || in.format.proven != inputs.front().format.proven ||
+        in.format.physical != inputs.front().format.physical)
       throw parse_error(in.path + ":1: wrong columns: the tables to merge must be of one kind");
     if (common(in.sidecar) != reference)
       throw error("cannot merge '" + in.path + "' with '" + inputs.front().path +
@@ -294,9 +335,9 @@ std::size_t merge_tables(const std::vector<std::string>& input_paths, const std:
       if (!part.contains(row.index))
         throw parse_error(in.path + ":" + std::to_string(row.line) + ": field index: row " +
                           std::to_string(row.index) + " does not belong to shard " + part.to_string());
-      if (on_grid && grid_key(row, kind) != keys[static_cast<std::size_t>(row.index)])
+      if (on_grid && in.format.key(row) != keys[static_cast<std::size_t>(row.index)])
         throw parse_error(in.path + ":" + std::to_string(row.line) + ": fields law..g: row " +
-                          std::to_string(row.index) + " is (" + grid_key(row, kind) + "), not the grid point (" +
+                          std::to_string(row.index) + " is (" + in.format.key(row) + "), not the grid point (" +
                           keys[static_cast<std::size_t>(row.index)] + ") of the spec its sidecar records");
       const auto [it, fresh] = seen.emplace(row.index, std::make_pair(&in, row.line));
       if (!fresh)

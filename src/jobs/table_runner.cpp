@@ -207,7 +207,7 @@ inline earlier_sessions resume_or_start(const table_job& job, const table_format
       if (job.expected_grid_key) {  // a row kept must be the grid point its index names
         const auto at = std::lower_bound(job.indices.begin(), job.indices.end(), row.index);
         const std::string expected = job.expected_grid_key(static_cast<std::size_t>(at - job.indices.begin()));
-        const std::string found = grid_key(row, job.kind);
+        const std::string found = format.key(row);
         if (found != expected)
           throw parse_error(partial + ":" + std::to_string(row.line) + ": fields law..g: row " +
                             std::to_string(row.index) + " is (" + found + "), not the grid point (" + expected +
@@ -331,6 +331,9 @@ inline void check_netcdf_request(const table_job& job) {
   if (job.kind != table_kind::cor)
     throw invalid_parameter("format netcdf: a sticking-threshold table has no (law, g, gamma) grid of e; NetCDF is "
                             "for CoR tables");
+  if (job.physical)
+    throw invalid_parameter("format netcdf: a table from a spec in SI has no (law, g, gamma) grid; its dataset form "
+                            "is not written yet (read its columns with viscor.table(...).column)");
   if (job.provenance.contains("shard") && !job.provenance["shard"].is_null())
     throw invalid_parameter("format netcdf: a shard is not the whole grid; write the NetCDF form of the merged "
                             "table (viscor table netcdf)");
@@ -388,7 +391,7 @@ inline table_run_summary publish_table(const table_job& job, const table_format&
 table_run_summary run_table_job(const table_job& job) {
   const auto wall_start = std::chrono::steady_clock::now();
   const std::time_t started = std::time(nullptr);
-  const table_format format{job.kind, job.proven};
+  const table_format format{job.kind, job.proven, job.physical};
   const detail::run_files files(job.output);
   detail::check_run_files(files);
   detail::check_netcdf_request(job);

@@ -229,6 +229,38 @@ class Table(unittest.TestCase):
 
 
 @unittest.skipUnless(CLI, "VISCOR_CLI not set")
+class PhysicalTable(unittest.TestCase):
+    """A spec in SI: each row is viscor.cor of the row's physical inputs."""
+
+    SPEC = {"laws": ["kuwabara_kono"],
+            "beads": [{"name": "steel", "youngs_modulus": "2.1e11", "poisson_ratio": "0.3", "radius": "0.004",
+                       "density": 7850},
+                      {"name": "glass", "youngs_modulus": "6.3e10", "poisson_ratio": "0.23", "radius": "0.004",
+                       "density": 2500}],
+            "v0": ["0.05", "1"], "gravity": [0, "9.81"], "gamma0": "8.49e-7", "digits": 20}
+
+    def test_rows_are_viscor_cor_of_their_inputs(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            t = viscor.table(self.SPEC, os.path.join(tmp, "si.csv"), threads=2)
+            self.assertEqual(t.rows, 8)
+            self.assertEqual(t.column("bead"), ["steel"] * 4 + ["glass"] * 4)
+            self.assertEqual(t.column("wall"), ["rigid"] * 8)
+            self.assertEqual(list(t.column("v0")), [0.05, 1.0] * 4)
+            self.assertEqual(list(t.column("gravity")), [0.0, 0.0, 9.81, 9.81] * 2)
+            self.assertEqual(t.sidecar["spec"]["gravity"], [{"value": "0"}, {"value": "9.81"}])
+            for i in range(t.rows):
+                inputs = {name: t.strings(name)[i] for name in
+                          ("youngs_modulus", "poisson_ratio", "radius", "density", "v0", "gamma0", "gravity", "force")}
+                r = viscor.cor("kuwabara_kono", digits=20, certify=True, **inputs)
+                self.assertEqual(t.strings("gamma")[i], r.gamma_exact, i)
+                self.assertEqual(t.strings("g")[i], r.g_exact, i)
+                self.assertEqual(t.strings("e")[i], r.certified.e_exact, i)
+                self.assertEqual(t.strings("one_minus_e")[i], r.certified.one_minus_e_exact, i)
+                self.assertEqual(int(t.strings("digits")[i]), r.certified.certified_digits, i)
+            with self.assertRaisesRegex(viscor.ParseError, r"field gravity: missing"):
+                viscor.table({k: v for k, v in self.SPEC.items() if k != "gravity"}, os.path.join(tmp, "x.csv"))
+
+
 class TableJobSameAsTheCli(unittest.TestCase):
     """viscor.table calls the library's table job: the same bytes as `viscor table`."""
 

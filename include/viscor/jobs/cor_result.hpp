@@ -26,6 +26,8 @@ struct physical_side {
   working_number time_scale, length_scale;      ///< s and m per scaled unit
   std::optional<working_number> contact_time_s;  ///< the contact time in seconds (empty: unknown)
   working_number max_compression_m;             ///< u_max in metres
+  /// With certify: the certified T_f and u_max in seconds and metres (empty: unknown).
+  std::optional<working_number> certified_contact_time_s, certified_max_compression_m;
 };
 
 /// One impact as the cor job found it: e, 1 - e, the outcome, the contact time and

@@ -134,29 +134,82 @@ inline void check_proven_fields(const viscor::detail::row_checker& c, std::size_
 
 }  // namespace detail
 
-/// Parses and validates a proven table (see parse_table of reference_table.hpp:
-/// the same rules, the CoR fields checked by it, the proof's fields here).
-inline csv_table parse_proven_table(const std::string& text, const std::string& file,
-                                    bool allow_truncated_tail = false) {
+/// The physical columns of a table from a spec in SI (physical_grid.hpp), after the
+/// CoR columns: the row's inputs as given (empty: not given) and, last, the contact
+/// time and the maximal compression in seconds and metres.
+inline const std::vector<std::string>& physical_columns() {
+  static const std::vector<std::string> names{
+      "bead",          "m",           "k",           "youngs_modulus", "poisson_ratio", "radius",
+      "density",       "contact",     "wall",        "wall_youngs_modulus", "wall_poisson_ratio",
+      "other_youngs_modulus", "other_poisson_ratio", "other_radius", "other_density", "v0",
+      "gamma0",        "gravity",     "force",       "contact_time_s", "max_compression_m"};
+  return names;
+}
+
+/// How many of physical_columns() are the row's inputs (the rest are its results in SI).
+inline constexpr std::size_t physical_input_columns = 19;
+
+namespace detail {
+
+/// The CoR columns followed by `extra`.
+inline std::vector<std::string> cor_columns_and(const std::vector<std::string>& extra) {
+  std::vector<std::string> c = table_columns(table_kind::cor);
+  c.insert(c.end(), extra.begin(), extra.end());
+  return c;
+}
+
+inline std::string header_of(const std::vector<std::string>& columns) {
+  std::string s;
+  for (const auto& c : columns) s += (s.empty() ? "" : ",") + c;
+  return s;
+}
+
+/// Checks the physical fields of one row (columns from `first` on).
+inline void check_physical_fields(const viscor::detail::row_checker& c, std::size_t first) {
+  const auto name = [&](std::size_t k) {
+    if (c.at(k).empty() ||
+        c.at(k).find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_.+-") !=
+            std::string::npos)
+      c.fail(k, "must be a name of letters, digits, '_', '.', '+' or '-'");
+  };
+  const auto optional_decimal = [&](std::size_t k) {
+    if (!c.at(k).empty()) c.decimal(k);
+  };
+  name(first);
+  for (std::size_t k = first + 1; k <= first + 6; ++k) optional_decimal(k);  // m .. density
+  c.one_of(first + 7, {"wall", "pair"});
+  name(first + 8);
+  for (std::size_t k = first + 9; k <= first + 14; ++k) optional_decimal(k);  // wall_* and other_*
+  for (std::size_t k = first + 15; k < first + physical_input_columns; ++k) c.decimal(k);  // v0, gamma0, gravity, force
+  c.optional_non_negative(first + physical_input_columns);
+  c.optional_non_negative(first + physical_input_columns + 1);
+}
+
+/// Parses a CoR table whose rows carry `columns` (the CoR ones, then others): the
+/// CoR fields checked by parse_table, the others by check_extra(row_checker, first
+/// column), then the sum e + (1 - e). `what` names the format in errors.
+template <class CheckExtra>
+csv_table parse_extended_table(const std::string& text, const std::string& file, bool allow_truncated_tail,
+                               const std::vector<std::string>& columns, const std::string& what,
+                               CheckExtra check_extra) {
   const std::size_t n_cor = table_columns(table_kind::cor).size();
-  const auto& columns = proven_table_columns();
+  const std::string header = header_of(columns);
   std::string cor_text;  // the same lines cut to the CoR columns, for parse_table
   std::vector<std::string> lines;
   bool have_header = false;
   const bool truncated = viscor::detail::for_each_table_line(
       text, file, allow_truncated_tail, [&](std::string line, std::size_t, const std::string& where) {
         if (!have_header) {
-          if (line != proven_table_header())
-            throw parse_error(where + ": wrong columns: expected '" + proven_table_header() +
-                              "' (a table of method proven), got '" + line + "'");
+          if (line != header)
+            throw parse_error(where + ": wrong columns: expected '" + header + "' (" + what + "), got '" + line + "'");
           cor_text += table_header(table_kind::cor) + "\n";
           have_header = true;
           return;
         }
         const std::vector<std::string> fields = viscor::split_fields(line);
         if (fields.size() != columns.size())
-          throw parse_error(where + ": expected " + std::to_string(columns.size()) + " fields (" +
-                            proven_table_header() + "), got " + std::to_string(fields.size()) +
+          throw parse_error(where + ": expected " + std::to_string(columns.size()) + " fields (" + header +
+                            "), got " + std::to_string(fields.size()) +
                             (fields.size() < columns.size() ? " (truncated row?)" : ""));
         std::string cor_line;
         for (std::size_t k = 0; k < n_cor; ++k) cor_line += (k ? "," : "") + fields[k];
@@ -170,11 +223,35 @@ inline csv_table parse_proven_table(const std::string& text, const std::string& 
     row.text = lines[i];
     row.fields = viscor::split_fields(row.text);
     const viscor::detail::row_checker check(file, row.line, columns, row.fields);
-    detail::check_proven_fields(check, n_cor);  // first: a value outside its enclosure says more
+    check_extra(check, n_cor);  // first: a value outside its enclosure says more than a sum
     viscor::detail::check_cor_sum(check);
   }
   table.truncated_tail = truncated;
   return table;
+}
+
+}  // namespace detail
+
+/// Every column of a table from a spec in SI: the CoR columns, then physical_columns().
+inline const std::vector<std::string>& physical_table_columns() {
+  static const std::vector<std::string> all = detail::cor_columns_and(physical_columns());
+  return all;
+}
+
+/// Parses and validates a proven table (see parse_table of reference_table.hpp:
+/// the same rules, the CoR fields checked by it, the proof's fields here).
+inline csv_table parse_proven_table(const std::string& text, const std::string& file,
+                                    bool allow_truncated_tail = false) {
+  return detail::parse_extended_table(text, file, allow_truncated_tail, proven_table_columns(),
+                                      "a table of method proven", detail::check_proven_fields);
+}
+
+/// Parses and validates a table from a spec in SI (the CoR fields by parse_table, the
+/// physical fields here).
+inline csv_table parse_physical_table(const std::string& text, const std::string& file,
+                                      bool allow_truncated_tail = false) {
+  return detail::parse_extended_table(text, file, allow_truncated_tail, physical_table_columns(),
+                                      "a table from a spec in SI", detail::check_physical_fields);
 }
 
 /// The sidecar's summary of a proven table's rows: the proven outcomes, and the
@@ -204,16 +281,30 @@ inline json proof_summary(const std::vector<csv_record>& rows) {
 struct table_format {
   table_kind kind = table_kind::cor;
   bool proven = false;
+  bool physical = false;  ///< a CoR table from a spec in SI: physical_columns() after the CoR ones
 
   /// The header line (without '\n').
-  std::string header() const { return proven ? proven_table_header() : table_header(kind); }
+  std::string header() const {
+    return proven ? proven_table_header() : physical ? detail::header_of(physical_table_columns()) : table_header(kind);
+  }
   /// Index of the `method` column (exact or certified).
   std::size_t method_column() const { return table_columns(kind).size() - 1; }
 
   /// Parses and validates a table of this format.
   csv_table parse(const std::string& text, const std::string& file, bool allow_truncated_tail = false) const {
-    return proven ? parse_proven_table(text, file, allow_truncated_tail)
-                  : parse_table(text, file, allow_truncated_tail);
+    return proven     ? parse_proven_table(text, file, allow_truncated_tail)
+           : physical ? parse_physical_table(text, file, allow_truncated_tail)
+                      : parse_table(text, file, allow_truncated_tail);
+  }
+  /// What names a row's point, to compare with the point its index names (resume,
+  /// merge): grid_key of reference_table.hpp, or for a table in SI the law and the
+  /// physical inputs (the scaled gamma and g follow from them).
+  std::string key(const csv_record& row) const {
+    if (!physical) return grid_key(row, kind);
+    const std::size_t first = table_columns(table_kind::cor).size();
+    std::string k = row.fields.at(1) + "," + row.fields.at(2) + "," + row.fields.at(3);
+    for (std::size_t c = first; c < first + physical_input_columns; ++c) k += "," + row.fields.at(c);
+    return k;
   }
   /// Reads and validates a table file of this format.
   csv_table read(const std::string& path, bool allow_truncated_tail = false) const {
@@ -232,6 +323,7 @@ struct table_format {
   static table_format of_text(const std::string& text) {
     const std::string first = text.substr(0, text.find('\n'));
     if (first == proven_table_header()) return {table_kind::cor, true};
+    if (first == detail::header_of(physical_table_columns())) return {table_kind::cor, false, true};
     if (first == table_header(table_kind::sticking)) return {table_kind::sticking, false};
     return {table_kind::cor, false};  // read() names any other header
   }

@@ -28,10 +28,12 @@ struct table_job {
   table_kind kind = table_kind::cor;
   /// The rows carry the proof's columns (method "proven", table_format.hpp); compute_line adds them.
   bool proven = false;
+  /// The rows carry the physical columns (a spec in SI, table_format.hpp).
+  bool physical = false;
   std::string output;                   ///< OUT.csv
   std::vector<std::int64_t> indices;    ///< grid indices of the rows of this run (its shard), ascending
   std::function<std::string(std::size_t)> compute_line;  ///< CSV line of row indices[i] (thread-safe)
-  /// The grid_key (reference_table.hpp) row indices[i] must have: --resume checks the
+  /// The key (table_format::key) row indices[i] must have: --resume checks the
   /// rows it keeps against it. Empty: not checked.
   std::function<std::string(std::size_t)> expected_grid_key;
   /// Sidecar fields (version, kind, spec, shard, scalar, method, ...); the

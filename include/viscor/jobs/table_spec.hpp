@@ -14,6 +14,7 @@
 
 #include <viscor/jobs/json_fields.hpp>
 #include <viscor/jobs/files.hpp>
+#include <viscor/jobs/physical_grid.hpp>
 
 #include <viscor/tables/grid_spec.hpp>
 #include <viscor/certify/certified_digits_goal.hpp>
@@ -216,9 +217,11 @@ class node_reader {
 
 /// A table spec as read from its file: the grid, and whether its method is "proven".
 struct table_spec {
-  grid_spec grid;       ///< with method certify when `proven`
+  grid_spec grid;       ///< with method certify when `proven`; no gamma and g axes when `physical`
   bool proven = false;  ///< "method": "proven": each row certified, then proven (table_format.hpp)
   std::string method_where;  ///< where "method" was given ("spec.json:7"), for errors
+  /// The physical axes (beads, walls, v0, gravity, force, gamma0), when the spec is in SI.
+  std::optional<physical_axes> physical;
 };
 
 namespace detail {
@@ -235,6 +238,7 @@ class spec_reader : public node_reader {
     spec.source = m_file;
     bool have_laws = false;
     const spec_node* digits_node = nullptr;
+    std::vector<const std::pair<std::string, spec_node>*> physical_nodes;
     for (std::size_t i = 0; i < root.members.size(); ++i) {
       const auto& [key, node] = root.members[i];
       if (key == "description" || key == "comment") {
@@ -269,12 +273,16 @@ class spec_reader : public node_reader {
         else fail(node, key, "must be \"g\" or \"gamma\", got \"" + v + "\"");
       } else if (key == "threshold_digits") {
         spec.threshold_digits = integer(node, key, 1, max_working_digits);
+      } else if (is_physical_field(key)) {
+        physical_nodes.push_back(&root.members[i]);
       } else {
         throw parse_error(m_file + ":" + std::to_string(root.member_lines[i]) + ": field " + key +
                           ": unknown field (known: description, laws, gamma, g, digits, certified_digits, method, "
-                          "min_digits, solve_for, threshold_digits)");
+                          "min_digits, solve_for, threshold_digits; in SI: beads, contact, walls, other, v0, "
+                          "gravity, force, gamma0)");
       }
     }
+    if (!physical_nodes.empty()) result.physical = physical(root, physical_nodes, result);
     if (spec.certified_digits > 0) {  // the working precision is chosen (certify/certified_digits_goal.hpp)
       if (digits_node)
         fail(*digits_node, "digits", "give either digits (the working precision) or certified_digits (the working "
@@ -284,10 +292,168 @@ class spec_reader : public node_reader {
     if (!have_laws) fail(root, "laws", "missing: list the contact laws, e.g. \"laws\": [\"linear\", \"tsuji\"]");
     validate(spec);  // digits, min_digits, laws
     expand(spec);    // every axis error (bad numbers, gamma < 0, non-terminating steps) before any work
+    if (result.physical) expand(*result.physical);
     return result;
   }
 
  private:
+  static bool is_physical_field(const std::string& key) {
+    for (const char* k : {"beads", "contact", "walls", "other", "v0", "gravity", "force", "gamma0"})
+      if (key == k) return true;
+    return false;
+  }
+
+  // A name for the rows: letters, digits and _ . + -, so that it needs no quoting in CSV.
+  std::string row_name(const spec_node& n, const std::string& field) const {
+    const std::string s = string(n, field);
+    if (s.empty() || s.size() > 64 ||
+        s.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_.+-") != std::string::npos)
+      fail(n, field, "must be 1 to 64 letters, digits, '_', '.', '+' or '-', got \"" + s + "\"");
+    return s;
+  }
+
+  // A bead: (m, k), or a material (youngs_modulus, poisson_ratio, radius, and m or density).
+  physical_bead bead(const spec_node& n, const std::string& field, bool named) const {
+    if (n.kind != spec_node::type::object) fail(n, field, "a bead is an object, got " + n.type_name());
+    physical_bead b;
+    b.where = m_file + ":" + std::to_string(n.line);
+    for (std::size_t i = 0; i < n.members.size(); ++i) {
+      const auto& [key, value] = n.members[i];
+      const std::string f = field + "." + key;
+      if (key == "name" && named) b.name = row_name(value, f);
+      else if (key == "m") b.m = number_text(value, f);
+      else if (key == "k") b.k = number_text(value, f);
+      else if (key == "youngs_modulus") b.youngs_modulus = number_text(value, f);
+      else if (key == "poisson_ratio") b.poisson_ratio = number_text(value, f);
+      else if (key == "radius") b.radius = number_text(value, f);
+      else if (key == "density") b.density = number_text(value, f);
+      else
+        throw parse_error(m_file + ":" + std::to_string(n.member_lines[i]) + ": field " + f + ": unknown field (a " +
+                          (named ? "bead has name, and m and k, or youngs_modulus, poisson_ratio, radius and m or "
+                                   "density"
+                                 : "second bead has youngs_modulus, poisson_ratio, radius and density") + ")");
+    }
+    const bool material = b.youngs_modulus || b.poisson_ratio || b.radius || b.density;
+    if (!named) {  // the pair's other bead is a material with its own density
+      if (!b.youngs_modulus || !b.poisson_ratio || !b.radius || !b.density || b.m || b.k)
+        fail(n, field, "the second bead needs youngs_modulus, poisson_ratio, radius and density");
+      return b;
+    }
+    if (material) {
+      if (b.k) fail(n, field, "give the stiffness either as k or as youngs_modulus, poisson_ratio and radius, not both");
+      if (!b.youngs_modulus || !b.poisson_ratio || !b.radius)
+        fail(n, field, "a bead of a material needs youngs_modulus, poisson_ratio and radius");
+      if (b.m.has_value() == b.density.has_value()) fail(n, field, "a bead of a material needs either m or density");
+    } else if (!b.m || !b.k) {
+      fail(n, field, "a bead needs m and k, or youngs_modulus, poisson_ratio, radius and m or density");
+    }
+    return b;
+  }
+
+  physical_wall wall(const spec_node& n, const std::string& field) const {
+    physical_wall w;
+    w.where = m_file + ":" + std::to_string(n.line);
+    if (n.kind == spec_node::type::string) {
+      if (n.text != "rigid") fail(n, field, "a wall is \"rigid\" or an object with youngs_modulus and poisson_ratio");
+      return w;
+    }
+    if (n.kind != spec_node::type::object)
+      fail(n, field, "a wall is \"rigid\" or an object with youngs_modulus and poisson_ratio, got " + n.type_name());
+    w.name.clear();
+    for (std::size_t i = 0; i < n.members.size(); ++i) {
+      const auto& [key, value] = n.members[i];
+      const std::string f = field + "." + key;
+      if (key == "name") {
+        w.name = row_name(value, f);
+        if (w.name == "rigid") fail(value, f, "\"rigid\" names the rigid wall, not a wall of a material");
+      } else if (key == "youngs_modulus") w.youngs_modulus = number_text(value, f);
+      else if (key == "poisson_ratio") w.poisson_ratio = number_text(value, f);
+      else
+        throw parse_error(m_file + ":" + std::to_string(n.member_lines[i]) + ": field " + f +
+                          ": unknown field (a wall has name, youngs_modulus and poisson_ratio)");
+    }
+    if (!w.youngs_modulus || !w.poisson_ratio) fail(n, field, "a wall of a material needs youngs_modulus and poisson_ratio");
+    return w;
+  }
+
+  // A list of named things (beads, walls): unnamed ones are called PREFIX + their position.
+  template <class Thing, class Read>
+  std::vector<Thing> named_list(const spec_node& n, const std::string& field, const std::string& prefix,
+                                Read read) const {
+    std::vector<const spec_node*> nodes;
+    if (n.kind == spec_node::type::array) {
+      if (n.elements.empty()) fail(n, field, "give at least one");
+      for (const auto& e : n.elements) nodes.push_back(&e);
+    } else {
+      nodes.push_back(&n);
+    }
+    std::vector<Thing> all;
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+      const std::string f = field + "[" + std::to_string(i) + "]";
+      Thing t = read(*nodes[i], f);
+      if (t.name.empty()) t.name = prefix + std::to_string(i);
+      for (const auto& seen : all)
+        if (seen.name == t.name) fail(*nodes[i], f + ".name", "\"" + t.name + "\" is given twice");
+      all.push_back(std::move(t));
+    }
+    return all;
+  }
+
+  // The physical axes; the scaled gamma and g then follow from each row.
+  physical_axes physical(const spec_node& root,
+                         const std::vector<const std::pair<std::string, spec_node>*>& nodes,
+                         const table_spec& table) const {
+    const grid_spec& spec = table.grid;
+    const auto refuse = [&](const spec_node& n, const std::string& field, const std::string& why) { fail(n, field, why); };
+    physical_axes a;
+    const spec_node* walls_node = nullptr;
+    const spec_node* other_node = nullptr;
+    for (const auto* member : nodes) {
+      const auto& [key, node] = *member;
+      if (key == "beads") {
+        a.beads = named_list<physical_bead>(node, key, "bead",
+                                            [&](const spec_node& x, const std::string& f) { return bead(x, f, true); });
+      } else if (key == "contact") {
+        a.contact = string(node, key);
+        if (a.contact != "wall" && a.contact != "pair") fail(node, key, "must be \"wall\" or \"pair\", got \"" + a.contact + "\"");
+      } else if (key == "walls") {
+        walls_node = &node;
+        a.walls = named_list<physical_wall>(node, key, "wall",
+                                            [&](const spec_node& x, const std::string& f) { return wall(x, f); });
+      } else if (key == "other") {
+        other_node = &node;
+        a.other = bead(node, key, false);
+      } else {
+        grid_axis& axis = key == "v0" ? a.v0 : key == "gravity" ? a.gravity : key == "force" ? a.force : a.gamma0;
+        axis = this->axis(node, key);
+      }
+    }
+    if (a.beads.empty()) refuse(root, "beads", "missing: a spec in SI lists its beads, e.g. \"beads\": [{\"name\": "
+                                               "\"steel\", \"youngs_modulus\": 2e11, \"poisson_ratio\": 0.3, "
+                                               "\"radius\": 0.005, \"density\": 7850}]");
+    if (a.v0.empty()) refuse(root, "v0", "missing: the impact speeds (m/s)");
+    if (a.gamma0.empty()) refuse(root, "gamma0", "missing: the damping coefficients gamma0 (SI)");
+    if (a.gravity.empty())
+      refuse(root, "gravity", "missing: the gravities (m/s^2 towards the wall; 0 for none): the load changes the "
+                              "result, so it never defaults");
+    if (!spec.gamma.empty() || !spec.g.empty())
+      refuse(root, !spec.gamma.empty() ? "gamma" : "g",
+             "a spec in SI gives v0, gravity and gamma0; the scaled gamma and g follow from each row");
+    if (walls_node && a.contact == "pair")
+      refuse(*walls_node, "walls", "a pair of beads has no wall (contact \"pair\")");
+    if (other_node && a.contact != "pair") refuse(*other_node, "other", "the second bead belongs to contact \"pair\"");
+    if (a.walls.empty()) a.walls.push_back(physical_wall{});  // a rigid wall, as viscor cor assumes
+    if (a.contact == "pair")
+      for (std::size_t i = 0; i < a.beads.size(); ++i)
+        if (!a.beads[i].youngs_modulus)
+          refuse(root, "beads[" + std::to_string(i) + "]", "a pair of beads needs each bead as a material");
+    if (spec.threshold_digits > 0) refuse(root, "threshold_digits", "a spec in SI is a CoR table, not sticking thresholds");
+    if (table.proven || spec.method == row_method::exact)
+      throw parse_error(table.method_where + ": field method: a spec in SI is certified row by row (\"auto\" or "
+                        "\"certify\"); a proof or a closed form needs the exact scaled inputs");
+    return a;
+  }
+
   long long integer(const spec_node& n, const std::string& field, long long lo, long long hi) const {
     const std::string t = n.kind == spec_node::type::number ? n.text : std::string("x");
     if (t.empty() || t.size() > 15 || t.find_first_not_of("0123456789-") != std::string::npos ||
@@ -449,6 +615,38 @@ inline json spec_to_json(const table_spec& table) {
   };
   if (!spec.gamma.empty()) j["gamma"] = axis_json(spec.gamma);
   if (!spec.g.empty()) j["g"] = axis_json(spec.g);
+  if (table.physical) {
+    const physical_axes& a = *table.physical;
+    const auto bead_json = [](const physical_bead& b) {
+      json x;
+      if (!b.name.empty()) x["name"] = b.name;
+      for (const auto& [key, value] : {std::pair{"m", &b.m}, {"k", &b.k}, {"youngs_modulus", &b.youngs_modulus},
+                                       {"poisson_ratio", &b.poisson_ratio}, {"radius", &b.radius},
+                                       {"density", &b.density}})
+        if (*value) x[key] = **value;
+      return x;
+    };
+    j["beads"] = json::array();
+    for (const auto& b : a.beads) j["beads"].push_back(bead_json(b));
+    j["contact"] = a.contact;
+    if (a.contact == "wall") {
+      j["walls"] = json::array();
+      for (const auto& w : a.walls)
+        j["walls"].push_back(!w.youngs_modulus ? json("rigid")
+                                               : json{{"name", w.name},
+                                                      {"youngs_modulus", *w.youngs_modulus},
+                                                      {"poisson_ratio", *w.poisson_ratio}});
+    }
+    if (a.other) {
+      physical_bead other = *a.other;
+      other.name.clear();
+      j["other"] = bead_json(other);
+    }
+    j["v0"] = axis_json(a.v0);
+    j["gravity"] = axis_json(a.gravity);
+    if (!a.force.empty()) j["force"] = axis_json(a.force);
+    j["gamma0"] = axis_json(a.gamma0);
+  }
   if (spec.certified_digits > 0) j["certified_digits"] = spec.certified_digits;  // digits follows from it
   else j["digits"] = spec.digits;
   j["method"] = table.proven ? std::string("proven") : to_string(spec.method);
@@ -474,7 +672,7 @@ inline table_spec parse_normalised_spec(json normalised, const std::string& wher
         if (!law["name"].get<std::string>().empty()) law = law["name"];
         else law.erase("name");
       }
-  for (const char* axis : {"gamma", "g"})
+  for (const char* axis : {"gamma", "g", "v0", "gravity", "force", "gamma0"})
     if (normalised.contains(axis) && normalised[axis].is_array())
       for (auto& item : normalised[axis])
         if (item.is_object() && item.contains("value")) item = item["value"];

@@ -21,6 +21,7 @@
 #include <viscor/core/outcome.hpp>
 #include <viscor/core/precision.hpp>
 #include <viscor/core/real_io.hpp>
+#include <viscor/core/working_number.hpp>
 #include <viscor/tables/reference_table.hpp>
 
 #include <boost/math/special_functions/fpclassify.hpp>
@@ -132,6 +133,13 @@ std::string rounded_decimal(const Real& x, int digits) {
   if (x == 0) return "0";
   if (isinf(x)) return x > 0 ? "inf" : "-inf";
   return to_decimal_string(x, digits);
+}
+
+/// x, held in its working type, rounded as rounded_decimal rounds that type.
+inline std::string rounded_decimal(const working_number& x, int digits) {
+  if (x.is_zero()) return "0";
+  if (x.is_infinite()) return x.value() > 0 ? "inf" : "-inf";
+  return x.decimal(digits);
 }
 
 /// Formats a certified point as a table row (Real -> rounded decimal strings).
