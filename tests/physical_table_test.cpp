@@ -63,7 +63,7 @@ std::string cor_options(const std::map<std::string, std::string>& row) {
            {"other_youngs_modulus", "--other-youngs-modulus"}, {"other_poisson_ratio", "--other-poisson-ratio"},
            {"other_radius", "--other-radius"}, {"other_density", "--other-density"}, {"v0", "--v0"},
            {"gamma0", "--gamma0"}, {"gravity", "--gravity"}, {"force", "--force"}})
-    if (!row.at(column).empty()) s += " " + option + " " + row.at(column);
+    if (row.count(column) && !row.at(column).empty()) s += " " + option + " " + row.at(column);
   if (row.at("contact") == "pair") s += " --contact pair";
   return s;
 }
@@ -207,6 +207,32 @@ TEST_F(PhysicalTable, WallsOfAMaterialAndPairs) {
   expect_rows_equal_cor(pair_rows, "--digits 30");
 }
 
+// A target CoR instead of the damping: gamma0 is what viscor calibrate finds for the
+// row's inputs, and the row is viscor cor at that gamma0 (its e the target, to the
+// calibration's tolerance).
+TEST_F(PhysicalTable, TargetCorsAreCalibratedAsViscorCalibrateDoes) {
+  const std::string spec = write("spec.json", R"({
+    "laws": ["tsuji", "hunt_crossley"],
+    "beads": {"name": "glass", "youngs_modulus": 6.3e10, "poisson_ratio": 0.23, "radius": 0.003, "density": 2500},
+    "v0": [0.02, 0.5], "gravity": 9.81, "target_e": [0.5, 0.8], "digits": 20})");
+  const auto r = run_cli("table " + spec + " -o " + path("out.csv") + " --quiet");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto rows = rows_of(read(path("out.csv")));
+  ASSERT_EQ(rows.size(), 8u);
+  for (const auto& row : rows) {
+    ASSERT_FALSE(row.at("target_e").empty());
+    std::map<std::string, std::string> inputs = row;
+    inputs["gamma0"] = "";
+    const std::string args = "calibrate --model " + row.at("law") + cor_options(inputs) + " --target-e " +
+                             row.at("target_e") + " --digits 20 --json";
+    const auto c = run_cli(args);
+    ASSERT_EQ(c.status, 0) << args << "\n" << c.err;
+    EXPECT_EQ(row.at("gamma0"), nlohmann::json::parse(c.out).at("gamma0").get<std::string>()) << args;
+    EXPECT_NEAR(std::stod(row.at("e")), std::stod(row.at("target_e")), 1e-12) << row.at("index");
+  }
+  expect_rows_equal_cor(rows, "--digits 20");
+}
+
 TEST_F(PhysicalTable, ShardsMergeAndInterruptedRunsResumeToTheSameBytes) {
   const std::string spec = write("spec.json", materials_spec());
   ASSERT_EQ(run_cli("table " + spec + " -o " + path("full.csv") + " --quiet").status, 0);
@@ -261,6 +287,10 @@ TEST_F(PhysicalTable, BadSpecsAreRefusedNamingTheFieldOrRowAndWriteNothing) {
       {R"({"laws": "tsuji", )" + bead + R"(, "contact": "pair", "walls": "rigid", "v0": 1, "gravity": 9.81, "gamma0": 1e-6, "digits": 15})",
        "field walls"},
       {R"({"laws": "tsuji", )" + bead + R"(, "v0": [1, -1], "gravity": 9.81, "gamma0": 1e-6, "digits": 15})", "v0"},
+      {R"({"laws": "tsuji", )" + bead + R"(, "v0": 1, "gravity": 9.81, "gamma0": 1e-6, "target_e": 0.5, "digits": 15})",
+       "field gamma0: give either gamma0 or target_e"},
+      {R"({"laws": "tsuji", )" + bead + R"(, "v0": 1, "gravity": 9.81, "target_e": [0.5, 1], "digits": 15})",
+       "field target_e: must be in (0, 1), got 1"},
   };
   for (const auto& [text, message] : cases) {
     const std::string spec = write("spec.json", text);

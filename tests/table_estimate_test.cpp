@@ -142,3 +142,25 @@ TEST(TableEstimateCli, PrintsTheEstimateAndWritesNothing) {
 }
 
 }  // namespace
+
+namespace {
+
+// A spec in SI: its rows are the product of its axes, counted here by hand, and a row
+// that calibrates its damping to a target e costs more than one at a given gamma0.
+TEST(TableEstimate, SpecsInSiCountTheirAxesAndChargeTheCalibration) {
+  const std::string axes = R"("beads": [{"name": "a", "m": 1e-3, "k": 1e9}, {"name": "b", "m": 2e-3, "k": 1e9}],
+    "walls": "rigid", "v0": [0.1, 0.2, 0.3], "gravity": [0, 9.81], "force": [0, 1, 2], "digits": 40)";
+  const auto given = jobs::estimate_cor_table(
+      spec_of(R"({"laws": ["tsuji", "hunt_crossley"], "gamma0": [1e-6, 2e-6], )" + axes + "}"), shard{}, 1);
+  EXPECT_EQ(given.rows, 2 * 2 * 3 * 2 * 3 * 2);  // laws x beads x v0 x gravity x force x gamma0
+  EXPECT_EQ(given.laws[0].rows, 72);
+  EXPECT_EQ(given.laws[0].cpu_time_per_row_s, jobs::row_cpu_time_s(law_by_name("tsuji"), 40, false));
+  const auto target = jobs::estimate_cor_table(
+      spec_of(R"({"laws": ["tsuji", "hunt_crossley"], "target_e": [0.5, 0.8], )" + axes + "}"), shard{}, 1);
+  EXPECT_EQ(target.rows, given.rows);
+  EXPECT_GT(target.cpu_time_s, 2 * given.cpu_time_s);  // MPFR: the calibration's solves (docs/performance.md)
+  EXPECT_EQ(jobs::estimate_cor_table(spec_of(R"({"laws": ["tsuji"], "gamma0": 1e-6, )" + axes + "}"), shard{1, 4}, 1).rows,
+            9);  // 36 rows, indices 1, 5, ..., 33
+}
+
+}  // namespace

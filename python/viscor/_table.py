@@ -62,7 +62,9 @@ class Table(str):
         return numpy.array([float(v) if v != "" else float("nan") for v in values], dtype=numpy.float64)
 
     def to_xarray(self):
-        """The table as an xarray.Dataset over its axes (law, g, gamma): e, one_minus_e,
+        """The table as an xarray.Dataset over its axes (law, g, gamma; for a table from a
+        spec in SI law, bead, wall, gravity, force, gamma0 or target_e, v0, with gamma, g,
+        contact_time_s and max_compression_m as variables): e, one_minus_e,
         contact_time, max_compression (float64, with their exact decimals as NAME_exact
         strings), outcome, certified_digits, method, and for a proven table the
         enclosures (rounded outwards, so still bounds), proven_digits and outcome_proven;

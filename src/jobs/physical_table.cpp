@@ -1,8 +1,11 @@
 // The rows of a table from a spec in SI (include/viscor/jobs/physical_table.hpp).
 #include <viscor/jobs/physical_table.hpp>
 
+#include <viscor/jobs/calibrate_job.hpp>
 #include <viscor/jobs/cor_job.hpp>
+#include <viscor/jobs/table_format.hpp>
 
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -10,7 +13,8 @@ namespace viscor::jobs {
 
 namespace {
 
-// The row's inputs in the order of physical_columns() (empty: not given).
+// The row's inputs in the order of physical_columns() (empty: not given; gamma0 of a
+// row with a target is its result, filled in by physical_row_line).
 std::vector<std::string> input_fields(const physical_axes& axes, const physical_point& p) {
   const physical_inputs& in = p.inputs;
   const auto text = [](const std::optional<std::string>& v) { return v ? *v : std::string(); };
@@ -30,7 +34,8 @@ std::vector<std::string> input_fields(const physical_axes& axes, const physical_
           text(in.other_radius),
           text(in.other_density),
           *in.v0,
-          *in.gamma0,
+          text(in.gamma0),
+          text(p.target_e),
           *in.gravity,
           *in.force};
 }
@@ -46,8 +51,8 @@ std::string describe(const physical_axes& axes, const physical_point& p) {
   const physical_inputs& in = p.inputs;
   return "row " + std::to_string(p.index) + " (" + p.law.describe() + ", bead " + axes.beads[p.bead].name +
          (axes.contact == "pair" ? std::string(", pair") : ", wall " + axes.walls[p.wall].name) +
-         ", gravity = " + *in.gravity + ", force = " + *in.force + ", gamma0 = " + *in.gamma0 + ", v0 = " + *in.v0 +
-         ")";
+         ", gravity = " + *in.gravity + ", force = " + *in.force +
+         (p.target_e ? ", target_e = " + *p.target_e : ", gamma0 = " + *in.gamma0) + ", v0 = " + *in.v0 + ")";
 }
 
 // x rounded to the row's certified digits; empty when unknown or uncertified.
@@ -62,6 +67,11 @@ void check_physical_rows(const table_spec& table, const std::vector<physical_poi
   const physical_axes& axes = *table.physical;
   check_plausible_physical_units(axes, expand(axes), table.grid.source);
   for (const physical_point& p : points) {
+    if (p.target_e) {  // the CoR a damping can give: 0 < e < 1
+      const double target = std::strtod(p.target_e->c_str(), nullptr);
+      if (!(target > 0 && target < 1))
+        throw invalid_parameter(table.grid.source + ": field target_e: must be in (0, 1), got " + *p.target_e);
+    }
     try {
       p.inputs.check_complete("table");
       require_gravity_towards_wall(p.inputs.gravity);
@@ -82,6 +92,18 @@ std::string physical_row_line(const physical_axes& axes, const physical_point& p
   cor_request q;
   q.law = p.law;
   q.physical = p.inputs;
+  if (p.target_e) {  // the damping first, as viscor calibrate finds it at the working precision
+    calibrate_request c;
+    c.law = p.law;
+    c.physical = p.inputs;
+    c.target_e = p.target_e;
+    c.digits = settings.digits;
+    try {
+      q.physical.gamma0 = run_calibrate(c).gamma0->decimal();
+    } catch (const error& e) {
+      throw certification_error(describe(axes, p) + ": " + e.marked());
+    }
+  }
   q.certify = true;
   if (settings.certified_digits > 0) q.certified_digits = settings.certified_digits;
   else q.digits = settings.digits;
@@ -108,7 +130,9 @@ std::string physical_row_line(const physical_axes& axes, const physical_point& p
   const table_row row = make_row(grid_point{p.index, p.law, r.gamma.decimal(), r.g.decimal()}, certified);
   const physical_side& si = *r.physical;
   const bool never_ends = c.contact_time && c.contact_time->is_infinite();  // in seconds too
-  return csv_line(row) + "," + joined(input_fields(axes, p)) + "," +
+  std::vector<std::string> inputs = input_fields(axes, p);
+  inputs[physical_gamma0_column] = *q.physical.gamma0;
+  return csv_line(row) + "," + joined(inputs) + "," +
          (never_ends ? std::string("inf") : certified_text(si.certified_contact_time_s, c.certified_digits)) + "," +
          certified_text(si.certified_max_compression_m, c.certified_digits);
 }

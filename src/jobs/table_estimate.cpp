@@ -67,6 +67,13 @@ std::int64_t rows_in_shard(std::int64_t first, std::int64_t count, const shard& 
   return below(first + count) - below(first);
 }
 
+// A row that calibrates its damping to a target e (a spec in SI with target_e) first
+// runs viscor calibrate's root finding, some 30 to 40 uncertified solves, then the
+// certified row: measured against the same rows at given gamma0 (docs/performance.md
+// "Cost before work"), 1.3-1.6 times the certified row in the fixed-width types and
+// 2.6-2.8 times in MPFR, where the certificate's reference run is relatively cheaper.
+double calibration_factor(int digits) { return scalar_for_digits(digits) == scalar_kind::mpfr ? 2.7 : 1.5; }
+
 }  // namespace
 
 double row_cpu_time_s(const contact_law& law, int digits, bool proven) {
@@ -116,6 +123,7 @@ table_estimate estimate_cor_table(const table_spec& table, const shard& part, in
     l.cpu_time_per_row_s = spec.method == row_method::exact
                                ? row_cpu_time_s(law_by_name("linear"), spec.digits, false)
                                : row_cpu_time_s(l.law, spec.digits, table.proven);
+    if (table.physical && !table.physical->target_e.empty()) l.cpu_time_per_row_s *= calibration_factor(spec.digits);
     l.cpu_time_s = static_cast<double>(l.rows) * l.cpu_time_per_row_s;
     out.rows += l.rows;
     out.rows_total += per_law;

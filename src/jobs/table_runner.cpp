@@ -329,11 +329,7 @@ inline output_file netcdf_output(const table_job& job, const std::string& table_
 inline void check_netcdf_request(const table_job& job) {
   if (!job.netcdf) return;
   if (job.kind != table_kind::cor)
-    throw invalid_parameter("format netcdf: a sticking-threshold table has no (law, g, gamma) grid of e; NetCDF is "
-                            "for CoR tables");
-  if (job.physical)
-    throw invalid_parameter("format netcdf: a table from a spec in SI has no (law, g, gamma) grid; its dataset form "
-                            "is not written yet (read its columns with viscor.table(...).column)");
+    throw invalid_parameter("format netcdf: a sticking-threshold table has no grid of e; NetCDF is for CoR tables");
   if (job.provenance.contains("shard") && !job.provenance["shard"].is_null())
     throw invalid_parameter("format netcdf: a shard is not the whole grid; write the NetCDF form of the merged "
                             "table (viscor table netcdf)");

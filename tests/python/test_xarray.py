@@ -165,3 +165,42 @@ class NetcdfFromTheCli(unittest.TestCase):
 
 if __name__ == "__main__":
     unittest.main()
+
+
+class PhysicalSpecDataset(unittest.TestCase):
+    """A table from a spec in SI: the dataset spans the spec's own axes, in table order."""
+
+    SPEC = {"laws": ["kuwabara_kono"],
+            "beads": [{"name": "steel", "youngs_modulus": "2.1e11", "poisson_ratio": "0.3", "radius": "0.002",
+                       "density": 7850},
+                      {"name": "glass", "youngs_modulus": "6.3e10", "poisson_ratio": "0.23", "radius": "0.002",
+                       "m": "8.4e-5"}],
+            "walls": ["rigid", {"name": "granite", "youngs_modulus": "5e10", "poisson_ratio": "0.25"}],
+            "v0": ["0.05", "1"], "gravity": [0, "9.81"], "target_e": ["0.5", "0.8"], "digits": 20}
+
+    def test_axes_values_and_round_trip(self):
+        if xarray is None or netCDF4 is None:
+            skip_or_fail(self, "xarray and netCDF4 (python3-xarray, python3-netcdf4)")
+        with tempfile.TemporaryDirectory() as tmp:
+            t = viscor.table(self.SPEC, os.path.join(tmp, "si.csv"), threads=2, format="netcdf")
+            ds = t.to_xarray()
+            self.assertEqual(dict(ds.sizes), {"law": 1, "bead": 2, "wall": 2, "gravity": 2, "force": 1,
+                                              "target_e": 2, "v0": 2})
+            self.assertEqual(list(ds.bead.values), ["steel", "glass"])
+            self.assertEqual(list(ds.wall.values), ["rigid", "granite"])
+            self.assertEqual(list(ds.density_exact.values), ["7850", ""])
+            self.assertTrue(math.isnan(ds.density.values[1]))
+            self.assertEqual(list(ds.v0.values), [0.05, 1.0])
+            self.assertEqual(ds.v0.attrs["units"], "m s-1")
+            self.assertEqual(ds.attrs["contact"], "wall")
+            # the grid in table order: the flattened arrays are the CSV's columns
+            for name in ("e", "one_minus_e", "gamma", "g", "gamma0", "contact_time_s", "max_compression_m"):
+                self.assertEqual(list(ds[name + "_exact"].values.ravel()), t.strings(name), name)
+                self.assertEqual(list(ds[name].values.ravel()), [float(x) for x in t.strings(name)], name)
+            self.assertEqual(list(ds.outcome.values.ravel()), t.strings("outcome"))
+            # e is the target it was calibrated to, at every bead, wall, load and speed
+            for target in ("0.5", "0.8"):
+                e = ds.e.sel(target_e=float(target)).values
+                self.assertLess(abs(e - float(target)).max(), 1e-12)
+            with xarray.open_dataset(os.path.join(tmp, "si.nc")) as back:
+                self.assertTrue(back.identical(ds))

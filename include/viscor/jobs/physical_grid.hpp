@@ -1,6 +1,7 @@
 // The physical axes of a table spec (docs/tables.md, "Physical specs"): beads as
 // materials or (m, k), a rigid wall, walls of a material or a second bead, impact
-// speeds v0, gravities, forces and dampings gamma0, all in SI, expanded into one
+// speeds v0, gravities, forces, and dampings gamma0 or target CoRs target_e (the
+// damping is then calibrated per row), all in SI, expanded into one
 // jobs::physical_inputs per row. Each row is then solved as `viscor cor` solves the
 // same inputs (physical_table.cpp), so the scaling is the library's one scaling.
 // Values are exact decimal text, as everywhere in a spec.
@@ -35,18 +36,21 @@ struct physical_wall {
 };
 
 /// The physical axes of a spec: its rows are laws x beads x walls x gravity x force x
-/// gamma0 x v0, in that order (v0 innermost: each e(v0) curve is one block of rows).
+/// (gamma0 or target_e) x v0, in that order (v0 innermost: each e(v0) curve is one
+/// block of rows).
 struct physical_axes {
   std::vector<physical_bead> beads;
   std::string contact = "wall";           ///< "wall" or "pair"
   std::vector<physical_wall> walls;       ///< contact wall: rigid unless given
   std::optional<physical_bead> other;     ///< contact pair: the second bead (none: like the first)
-  grid_axis v0, gravity, force, gamma0;   ///< force: 0 unless given
+  grid_axis v0, gravity, force;           ///< force: 0 unless given
+  grid_axis gamma0, target_e;             ///< the damping, or the CoR it is calibrated to (one of them)
 };
 
 /// The expanded values of the physical axes (sorted exact decimals).
 struct expanded_physical_axes {
-  std::vector<std::string> v0, gravity, force, gamma0;
+  std::vector<std::string> v0, gravity, force;
+  std::vector<std::string> damping;  ///< gamma0 values, or target_e values
 };
 
 /// One row of a physical table.
@@ -54,7 +58,8 @@ struct physical_point {
   std::int64_t index = 0;
   contact_law law;
   std::size_t bead = 0, wall = 0;  ///< positions in physical_axes::beads and walls
-  physical_inputs inputs;          ///< what `viscor cor` would be given for this row
+  physical_inputs inputs;          ///< what `viscor cor` would be given (gamma0 unset for a target)
+  std::optional<std::string> target_e;  ///< the CoR gamma0 is calibrated to (viscor calibrate)
 };
 
 /// The axes expanded into sorted exact decimals (force: 0 when not given).
@@ -63,20 +68,20 @@ inline expanded_physical_axes expand(const physical_axes& axes) {
   out.v0 = expand_axis(axes.v0, "v0");
   out.gravity = expand_axis(axes.gravity, "gravity");
   out.force = axes.force.empty() ? std::vector<std::string>{"0"} : expand_axis(axes.force, "force");
-  out.gamma0 = expand_axis(axes.gamma0, "gamma0");
+  out.damping = axes.target_e.empty() ? expand_axis(axes.gamma0, "gamma0") : expand_axis(axes.target_e, "target_e");
   return out;
 }
 
-/// Rows per law: beads x walls x gravity x force x gamma0 x v0.
+/// Rows per law: beads x walls x gravity x force x (gamma0 or target_e) x v0.
 inline std::int64_t physical_rows_per_law(const physical_axes& axes, const expanded_physical_axes& values) {
   return static_cast<std::int64_t>(axes.beads.size() * axes.walls.size() * values.gravity.size() *
-                                   values.force.size() * values.gamma0.size() * values.v0.size());
+                                   values.force.size() * values.damping.size() * values.v0.size());
 }
 
-/// The inputs of one row, as `viscor cor` takes them.
+/// The inputs of one row, as `viscor cor` takes them (gamma0 unset: calibrated to a target).
 inline physical_inputs inputs_of(const physical_axes& axes, const physical_bead& bead, const physical_wall& wall,
-                                 const std::string& gravity, const std::string& force, const std::string& gamma0,
-                                 const std::string& v0) {
+                                 const std::string& gravity, const std::string& force,
+                                 const std::optional<std::string>& gamma0, const std::string& v0) {
   physical_inputs in;
   in.m = bead.m, in.k = bead.k;
   in.youngs_modulus = bead.youngs_modulus, in.poisson_ratio = bead.poisson_ratio;
@@ -101,11 +106,16 @@ inline std::vector<physical_point> physical_points(const std::vector<contact_law
       for (std::size_t w = 0; w < axes.walls.size(); ++w)
         for (const auto& gravity : values.gravity)
           for (const auto& force : values.force)
-            for (const auto& gamma0 : values.gamma0)
+            for (const auto& damping : values.damping)
               for (const auto& v0 : values.v0) {
-                if (part.contains(index))
-                  points.push_back({index, law, b, w,
-                                    inputs_of(axes, axes.beads[b], axes.walls[w], gravity, force, gamma0, v0)});
+                if (part.contains(index)) {
+                  const bool target = !axes.target_e.empty();
+                  points.push_back(
+                      {index, law, b, w,
+                       inputs_of(axes, axes.beads[b], axes.walls[w], gravity, force,
+                                 target ? std::nullopt : std::optional<std::string>(damping), v0),
+                       target ? std::optional<std::string>(damping) : std::nullopt});
+                }
                 ++index;
               }
   return points;

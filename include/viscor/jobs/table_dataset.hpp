@@ -1,7 +1,8 @@
 // A CoR table as a gridded dataset: the one layout behind Python's
 // Table.to_xarray() and `viscor table --format netcdf` (docs/tables.md, "NetCDF and
-// xarray"). The rows of a table file become arrays over (law, g, gamma); the sidecar's
-// provenance becomes attributes. Defined in src/jobs/table_dataset.cpp; the NetCDF
+// xarray"). The rows of a table file become arrays over (law, g, gamma), or for a
+// table from a spec in SI over (law, bead, wall, gravity, force, gamma0 or target_e,
+// v0); the sidecar's provenance becomes attributes. Defined in src/jobs/table_dataset.cpp; the NetCDF
 // form in jobs/netcdf_file.hpp.
 #pragma once
 
@@ -34,9 +35,9 @@ using dataset_attribute = std::variant<std::string, std::int64_t>;
 
 /// A complete CoR table over its axes.
 struct table_dataset {
-  std::vector<std::pair<std::string, std::size_t>> dimensions;  ///< law, g, gamma
+  std::vector<std::pair<std::string, std::size_t>> dimensions;  ///< law, g, gamma (or the axes in SI)
   std::vector<dataset_array> coordinates;  ///< the axes, and what rides on them (alpha, beta, exact decimals)
-  std::vector<dataset_array> variables;    ///< over (law, g, gamma)
+  std::vector<dataset_array> variables;    ///< over every dimension
   std::vector<std::pair<std::string, dataset_attribute>> attributes;  ///< provenance
 };
 

@@ -142,12 +142,15 @@ inline const std::vector<std::string>& physical_columns() {
       "bead",          "m",           "k",           "youngs_modulus", "poisson_ratio", "radius",
       "density",       "contact",     "wall",        "wall_youngs_modulus", "wall_poisson_ratio",
       "other_youngs_modulus", "other_poisson_ratio", "other_radius", "other_density", "v0",
-      "gamma0",        "gravity",     "force",       "contact_time_s", "max_compression_m"};
+      "gamma0",        "target_e",    "gravity",     "force",       "contact_time_s", "max_compression_m"};
   return names;
 }
 
 /// How many of physical_columns() are the row's inputs (the rest are its results in SI).
-inline constexpr std::size_t physical_input_columns = 19;
+inline constexpr std::size_t physical_input_columns = 20;
+/// The positions of gamma0 and target_e among physical_columns(): with a target,
+/// gamma0 is the row's calibrated result, not an input.
+inline constexpr std::size_t physical_gamma0_column = 16, physical_target_e_column = 17;
 
 namespace detail {
 
@@ -180,7 +183,9 @@ inline void check_physical_fields(const viscor::detail::row_checker& c, std::siz
   c.one_of(first + 7, {"wall", "pair"});
   name(first + 8);
   for (std::size_t k = first + 9; k <= first + 14; ++k) optional_decimal(k);  // wall_* and other_*
-  for (std::size_t k = first + 15; k < first + physical_input_columns; ++k) c.decimal(k);  // v0, gamma0, gravity, force
+  for (std::size_t k = first + 15; k < first + physical_input_columns; ++k)  // v0, gamma0, target_e, gravity, force
+    if (k != first + physical_target_e_column) c.decimal(k);
+  optional_decimal(first + physical_target_e_column);
   c.optional_non_negative(first + physical_input_columns);
   c.optional_non_negative(first + physical_input_columns + 1);
 }
@@ -302,8 +307,10 @@ struct table_format {
   std::string key(const csv_record& row) const {
     if (!physical) return grid_key(row, kind);
     const std::size_t first = table_columns(table_kind::cor).size();
+    const bool calibrated = !row.fields.at(first + physical_target_e_column).empty();
     std::string k = row.fields.at(1) + "," + row.fields.at(2) + "," + row.fields.at(3);
-    for (std::size_t c = first; c < first + physical_input_columns; ++c) k += "," + row.fields.at(c);
+    for (std::size_t c = first; c < first + physical_input_columns; ++c)
+      k += "," + (calibrated && c == first + physical_gamma0_column ? std::string() : row.fields.at(c));
     return k;
   }
   /// Reads and validates a table file of this format.

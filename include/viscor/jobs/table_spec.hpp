@@ -279,7 +279,7 @@ class spec_reader : public node_reader {
         throw parse_error(m_file + ":" + std::to_string(root.member_lines[i]) + ": field " + key +
                           ": unknown field (known: description, laws, gamma, g, digits, certified_digits, method, "
                           "min_digits, solve_for, threshold_digits; in SI: beads, contact, walls, other, v0, "
-                          "gravity, force, gamma0)");
+                          "gravity, force, gamma0, target_e)");
       }
     }
     if (!physical_nodes.empty()) result.physical = physical(root, physical_nodes, result);
@@ -298,7 +298,7 @@ class spec_reader : public node_reader {
 
  private:
   static bool is_physical_field(const std::string& key) {
-    for (const char* k : {"beads", "contact", "walls", "other", "v0", "gravity", "force", "gamma0"})
+    for (const char* k : {"beads", "contact", "walls", "other", "v0", "gravity", "force", "gamma0", "target_e"})
       if (key == k) return true;
     return false;
   }
@@ -424,7 +424,11 @@ class spec_reader : public node_reader {
         other_node = &node;
         a.other = bead(node, key, false);
       } else {
-        grid_axis& axis = key == "v0" ? a.v0 : key == "gravity" ? a.gravity : key == "force" ? a.force : a.gamma0;
+        grid_axis& axis = key == "v0"        ? a.v0
+                          : key == "gravity" ? a.gravity
+                          : key == "force"   ? a.force
+                          : key == "gamma0"  ? a.gamma0
+                                             : a.target_e;
         axis = this->axis(node, key);
       }
     }
@@ -432,7 +436,11 @@ class spec_reader : public node_reader {
                                                "\"steel\", \"youngs_modulus\": 2e11, \"poisson_ratio\": 0.3, "
                                                "\"radius\": 0.005, \"density\": 7850}]");
     if (a.v0.empty()) refuse(root, "v0", "missing: the impact speeds (m/s)");
-    if (a.gamma0.empty()) refuse(root, "gamma0", "missing: the damping coefficients gamma0 (SI)");
+    if (a.gamma0.empty() == a.target_e.empty())
+      refuse(root, "gamma0", a.gamma0.empty() ? "missing: the damping coefficients gamma0 (SI), or the CoRs target_e "
+                                                "to calibrate the damping to"
+                                              : "give either gamma0 or target_e (the damping is then calibrated), "
+                                                "not both");
     if (a.gravity.empty())
       refuse(root, "gravity", "missing: the gravities (m/s^2 towards the wall; 0 for none): the load changes the "
                               "result, so it never defaults");
@@ -645,7 +653,8 @@ inline json spec_to_json(const table_spec& table) {
     j["v0"] = axis_json(a.v0);
     j["gravity"] = axis_json(a.gravity);
     if (!a.force.empty()) j["force"] = axis_json(a.force);
-    j["gamma0"] = axis_json(a.gamma0);
+    if (!a.gamma0.empty()) j["gamma0"] = axis_json(a.gamma0);
+    if (!a.target_e.empty()) j["target_e"] = axis_json(a.target_e);
   }
   if (spec.certified_digits > 0) j["certified_digits"] = spec.certified_digits;  // digits follows from it
   else j["digits"] = spec.digits;
@@ -672,7 +681,7 @@ inline table_spec parse_normalised_spec(json normalised, const std::string& wher
         if (!law["name"].get<std::string>().empty()) law = law["name"];
         else law.erase("name");
       }
-  for (const char* axis : {"gamma", "g", "v0", "gravity", "force", "gamma0"})
+  for (const char* axis : {"gamma", "g", "v0", "gravity", "force", "gamma0", "target_e"})
     if (normalised.contains(axis) && normalised[axis].is_array())
       for (auto& item : normalised[axis])
         if (item.is_object() && item.contains("value")) item = item["value"];
