@@ -4,6 +4,7 @@
 // (m, k) beads, walls of a material, a pair, forces and certified digits asked for);
 // shards merge and interrupted runs resume to the same bytes; bad specs are refused
 // naming the field or the row, with nothing written.
+#include "certified_claims.hpp"
 #include "test_utils.hpp"
 
 #include <gtest/gtest.h>
@@ -20,37 +21,13 @@
 namespace {
 
 namespace fs = std::filesystem;
+using viscor::test::read_named_rows;
 using viscor::test::run_cli;
 
 class PhysicalTable : public viscor::test::scratch_dir_test {
  protected:
   PhysicalTable() : scratch_dir_test("viscor_physical_table_") {}
 };
-
-/// A table's rows as maps from column name to field.
-std::vector<std::map<std::string, std::string>> rows_of(const std::string& csv) {
-  std::istringstream lines(csv);
-  std::string line;
-  auto split = [](const std::string& s) {
-    std::vector<std::string> fields;
-    std::string f;
-    std::istringstream in(s);
-    while (std::getline(in, f, ',')) fields.push_back(f);
-    if (!s.empty() && s.back() == ',') fields.emplace_back();
-    return fields;
-  };
-  std::getline(lines, line);
-  const std::vector<std::string> header = split(line);
-  std::vector<std::map<std::string, std::string>> rows;
-  while (std::getline(lines, line)) {
-    const std::vector<std::string> fields = split(line);
-    EXPECT_EQ(fields.size(), header.size()) << line;
-    std::map<std::string, std::string> row;
-    for (std::size_t k = 0; k < header.size() && k < fields.size(); ++k) row[header[k]] = fields[k];
-    rows.push_back(row);
-  }
-  return rows;
-}
 
 /// The `viscor cor` options that give the row's physical inputs (from the row's own
 /// columns, which the callers check against the spec).
@@ -127,7 +104,7 @@ TEST_F(PhysicalTable, ThreeMaterialsFiveSpeedsTwoGravitiesEqualViscorCor) {
   const std::string spec = write("spec.json", materials_spec());
   const auto r = run_cli("table " + spec + " -o " + path("out.csv") + " --quiet --threads 2");
   ASSERT_EQ(r.status, 0) << r.err;
-  const auto rows = rows_of(read(path("out.csv")));
+  const auto rows = read_named_rows(path("out.csv"));
   ASSERT_EQ(rows.size(), 30u);
   std::size_t i = 0;
   for (const auto& bead : beads)  // the table's order: beads, gravity, v0 (ascending)
@@ -164,7 +141,7 @@ TEST_F(PhysicalTable, MassAndStiffnessUnderForceWithCertifiedDigits) {
     "certified_digits": 25})");
   const auto r = run_cli("table " + spec + " -o " + path("out.csv") + " --quiet");
   ASSERT_EQ(r.status, 0) << r.err;
-  const auto rows = rows_of(read(path("out.csv")));
+  const auto rows = read_named_rows(path("out.csv"));
   ASSERT_EQ(rows.size(), 16u);
   EXPECT_EQ(rows[0].at("bead"), "a");
   EXPECT_EQ(rows[8].at("bead"), "bead1");  // an unnamed bead is named by its position
@@ -184,7 +161,7 @@ TEST_F(PhysicalTable, WallsOfAMaterialAndPairs) {
     "v0": 0.3, "gravity": 9.81, "gamma0": ["5e-9", "1e-9"], "digits": 18})");
   auto r = run_cli("table " + walls + " -o " + path("walls.csv") + " --quiet");
   ASSERT_EQ(r.status, 0) << r.err;
-  const auto wall_rows = rows_of(read(path("walls.csv")));
+  const auto wall_rows = read_named_rows(path("walls.csv"));
   ASSERT_EQ(wall_rows.size(), 8u);
   EXPECT_EQ(wall_rows[2].at("wall"), "glass");
   EXPECT_EQ(wall_rows[2].at("wall_youngs_modulus"), "6.3e10");
@@ -199,7 +176,7 @@ TEST_F(PhysicalTable, WallsOfAMaterialAndPairs) {
     "v0": [0.2, 2], "gravity": 9.81, "force": 0.01, "gamma0": 1e-6, "digits": 30})");
   r = run_cli("table " + pair + " -o " + path("pair.csv") + " --quiet");
   ASSERT_EQ(r.status, 0) << r.err;
-  const auto pair_rows = rows_of(read(path("pair.csv")));
+  const auto pair_rows = read_named_rows(path("pair.csv"));
   ASSERT_EQ(pair_rows.size(), 2u);
   EXPECT_EQ(pair_rows[0].at("contact"), "pair");
   EXPECT_EQ(pair_rows[0].at("wall"), "none");
@@ -217,7 +194,7 @@ TEST_F(PhysicalTable, TargetCorsAreCalibratedAsViscorCalibrateDoes) {
     "v0": [0.02, 0.5], "gravity": 9.81, "target_e": [0.5, 0.8], "digits": 20})");
   const auto r = run_cli("table " + spec + " -o " + path("out.csv") + " --quiet");
   ASSERT_EQ(r.status, 0) << r.err;
-  const auto rows = rows_of(read(path("out.csv")));
+  const auto rows = read_named_rows(path("out.csv"));
   ASSERT_EQ(rows.size(), 8u);
   for (const auto& row : rows) {
     ASSERT_FALSE(row.at("target_e").empty());
@@ -231,6 +208,26 @@ TEST_F(PhysicalTable, TargetCorsAreCalibratedAsViscorCalibrateDoes) {
     EXPECT_NEAR(std::stod(row.at("e")), std::stod(row.at("target_e")), 1e-12) << row.at("index");
   }
   expect_rows_equal_cor(rows, "--digits 20");
+}
+
+// A stick's contact never ends, in seconds too, whatever the arithmetic (double-double's
+// inf * x is NaN: the conversion must not multiply it).
+TEST_F(PhysicalTable, AStickLastsForeverInSecondsInEveryArithmetic) {
+  for (const char* digits : {"15", "20", "33", "40"}) {
+    const auto r = run_cli(std::string("cor --model linear --m 0.001 --k 1e5 --v0 0.1 --gamma0 0.1 --gravity 9.81 "
+                                       "--certify --json --digits ") + digits);
+    ASSERT_EQ(r.status, 0) << r.err;
+    const nlohmann::json j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j.at("outcome"), "stick") << digits;
+    EXPECT_EQ(j.at("contact_time_s"), "inf") << digits;
+  }
+  const std::string spec = write("spec.json", R"({"laws": "linear", "beads": {"m": 0.001, "k": 1e5}, "v0": 0.1,
+    "gravity": 9.81, "gamma0": 0.1, "digits": 20})");
+  ASSERT_EQ(run_cli("table " + spec + " -o " + path("out.csv") + " --quiet").status, 0);
+  const auto rows = read_named_rows(path("out.csv"));
+  ASSERT_EQ(rows.size(), 1u);
+  EXPECT_EQ(rows[0].at("outcome"), "stick");
+  EXPECT_EQ(rows[0].at("contact_time_s"), "inf");
 }
 
 TEST_F(PhysicalTable, ShardsMergeAndInterruptedRunsResumeToTheSameBytes) {

@@ -54,12 +54,13 @@ cor_result run_cor_at_precision(const cor_request& q) {
       side.m = working_number::of(bead->m), side.k = working_number::of(bead->k);
       side.time_scale = working_number::of(scales->time_scale);
       side.length_scale = working_number::of(scales->length_scale);
-      if (r.contact_time) side.contact_time_s = working_number::of(Real(*r.contact_time->as<Real>() * scales->time_scale));
+      const auto seconds = [&](const Real& t) { return in_seconds(t, scales->time_scale); };
+      if (r.contact_time) side.contact_time_s = working_number::of(seconds(*r.contact_time->as<Real>()));
       side.max_compression_m = working_number::of(Real(*r.max_compression.as<Real>() * scales->length_scale));
       if (r.certified) {  // held in Real (certify<Real>); a value of another type stays unknown
         const certified_result<working_number>& c = *r.certified;
         if (const Real* t = c.contact_time ? c.contact_time->as<Real>() : nullptr)
-          side.certified_contact_time_s = working_number::of(Real(*t * scales->time_scale));
+          side.certified_contact_time_s = working_number::of(seconds(*t));
         if (const Real* u = c.max_compression.as<Real>())
           side.certified_max_compression_m = working_number::of(Real(*u * scales->length_scale));
       }

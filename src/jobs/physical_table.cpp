@@ -129,11 +129,10 @@ std::string physical_row_line(const physical_axes& axes, const physical_point& p
   // The scaled inputs in the digits that give back the working value: the row's point.
   const table_row row = make_row(grid_point{p.index, p.law, r.gamma.decimal(), r.g.decimal()}, certified);
   const physical_side& si = *r.physical;
-  const bool never_ends = c.contact_time && c.contact_time->is_infinite();  // in seconds too
   std::vector<std::string> inputs = input_fields(axes, p);
   inputs[physical_gamma0_column] = *q.physical.gamma0;
   return csv_line(row) + "," + joined(inputs) + "," +
-         (never_ends ? std::string("inf") : certified_text(si.certified_contact_time_s, c.certified_digits)) + "," +
+         certified_text(si.certified_contact_time_s, c.certified_digits) + "," +
          certified_text(si.certified_max_compression_m, c.certified_digits);
 }
 

@@ -8,6 +8,8 @@
 #include <viscor/core/contact_law.hpp>
 #include <viscor/core/parameters.hpp>
 
+#include <boost/math/special_functions/fpclassify.hpp>
+
 namespace viscor {
 
 /// Physical impact data in SI units; k has units N/m^alpha, gamma0 s/m^(beta-alpha)...
@@ -40,6 +42,13 @@ struct scaled_parameters {
   Real time_scale = 0;    ///< T: physical time = T * tau
   Real length_scale = 0;  ///< delta = v0 T: physical overlap = delta * u
 };
+
+/// A scaled time tau in seconds, T * tau; a contact that never ends (tau infinite)
+/// lasts forever in seconds too (double-double's inf * T would be NaN).
+template <class Real>
+Real in_seconds(const Real& tau, const Real& time_scale) {
+  return (boost::math::isinf)(tau) ? tau : Real(tau * time_scale);
+}
 
 namespace detail {
 template <class Real>

@@ -404,7 +404,6 @@ class spec_reader : public node_reader {
                          const std::vector<const std::pair<std::string, spec_node>*>& nodes,
                          const table_spec& table) const {
     const grid_spec& spec = table.grid;
-    const auto refuse = [&](const spec_node& n, const std::string& field, const std::string& why) { fail(n, field, why); };
     physical_axes a;
     const spec_node* walls_node = nullptr;
     const spec_node* other_node = nullptr;
@@ -432,30 +431,30 @@ class spec_reader : public node_reader {
         axis = this->axis(node, key);
       }
     }
-    if (a.beads.empty()) refuse(root, "beads", "missing: a spec in SI lists its beads, e.g. \"beads\": [{\"name\": "
+    if (a.beads.empty()) fail(root, "beads", "missing: a spec in SI lists its beads, e.g. \"beads\": [{\"name\": "
                                                "\"steel\", \"youngs_modulus\": 2e11, \"poisson_ratio\": 0.3, "
                                                "\"radius\": 0.005, \"density\": 7850}]");
-    if (a.v0.empty()) refuse(root, "v0", "missing: the impact speeds (m/s)");
+    if (a.v0.empty()) fail(root, "v0", "missing: the impact speeds (m/s)");
     if (a.gamma0.empty() == a.target_e.empty())
-      refuse(root, "gamma0", a.gamma0.empty() ? "missing: the damping coefficients gamma0 (SI), or the CoRs target_e "
+      fail(root, "gamma0", a.gamma0.empty() ? "missing: the damping coefficients gamma0 (SI), or the CoRs target_e "
                                                 "to calibrate the damping to"
                                               : "give either gamma0 or target_e (the damping is then calibrated), "
                                                 "not both");
     if (a.gravity.empty())
-      refuse(root, "gravity", "missing: the gravities (m/s^2 towards the wall; 0 for none): the load changes the "
+      fail(root, "gravity", "missing: the gravities (m/s^2 towards the wall; 0 for none): the load changes the "
                               "result, so it never defaults");
     if (!spec.gamma.empty() || !spec.g.empty())
-      refuse(root, !spec.gamma.empty() ? "gamma" : "g",
+      fail(root, !spec.gamma.empty() ? "gamma" : "g",
              "a spec in SI gives v0, gravity and gamma0; the scaled gamma and g follow from each row");
     if (walls_node && a.contact == "pair")
-      refuse(*walls_node, "walls", "a pair of beads has no wall (contact \"pair\")");
-    if (other_node && a.contact != "pair") refuse(*other_node, "other", "the second bead belongs to contact \"pair\"");
+      fail(*walls_node, "walls", "a pair of beads has no wall (contact \"pair\")");
+    if (other_node && a.contact != "pair") fail(*other_node, "other", "the second bead belongs to contact \"pair\"");
     if (a.walls.empty()) a.walls.push_back(physical_wall{});  // a rigid wall, as viscor cor assumes
     if (a.contact == "pair")
       for (std::size_t i = 0; i < a.beads.size(); ++i)
         if (!a.beads[i].youngs_modulus)
-          refuse(root, "beads[" + std::to_string(i) + "]", "a pair of beads needs each bead as a material");
-    if (spec.threshold_digits > 0) refuse(root, "threshold_digits", "a spec in SI is a CoR table, not sticking thresholds");
+          fail(root, "beads[" + std::to_string(i) + "]", "a pair of beads needs each bead as a material");
+    if (spec.threshold_digits > 0) fail(root, "threshold_digits", "a spec in SI is a CoR table, not sticking thresholds");
     if (table.proven || spec.method == row_method::exact)
       throw parse_error(table.method_where + ": field method: a spec in SI is certified row by row (\"auto\" or "
                         "\"certify\"); a proof or a closed form needs the exact scaled inputs");

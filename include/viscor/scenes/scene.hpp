@@ -267,7 +267,7 @@ void run_scene(const resolved_scene<Real>& s, const error_map* map, F&& each, co
     scene_row<Real> row;
     row.v0 = v0, row.gamma = scaled.gamma, row.g = scaled.g;
     row.result = ev(scaled.gamma, scaled.g, s.tolerance);
-    if (row.result.contact_time) row.contact_time = Real(*row.result.contact_time * scaled.time_scale);
+    if (row.result.contact_time) row.contact_time = in_seconds(*row.result.contact_time, scaled.time_scale);
     each(row);
   }
 }
