@@ -9,6 +9,10 @@
 //     (items_per_second is its inverse).
 //   BM_library_gamma_for/<law>, BM_exported_c_gamma_for/<law>: the inverse on the 1024
 //     (e, g) of surrogate_bench's BM_gamma_for.
+//   BM_exported_c_damping_entry/<model>, BM_exported_c_dem_deck/<model>: each DEM code's
+//     entries (viscor_dem_damping_entry; viscor_dem_deck with the like-bead entries) on
+//     1024 impacts: rigid walls, steel to polymer beads of 0.1-20 mm at 1 mm/s to 5 m/s,
+//     with and without gravity, targets 0.1-0.95 (docs/dem.md, "Each code's entries").
 // Run: ./build/benchmarks/surrogate_export_bench (Release, -DVISCOR_BUILD_BENCHMARKS=ON).
 #include <viscor/surrogate/cor_surrogate.hpp>
 #include <viscor/surrogate/surrogate_timing.hpp>
@@ -17,6 +21,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include <cmath>
 #include <map>
 #include <random>
 #include <string>
@@ -85,7 +90,49 @@ void BM_exported_c_gamma_for(benchmark::State& state, const std::string& law) {
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * points.size()));
 }
 
+// Impacts as a DEM deck has them (rigid wall), with a target each.
+struct dem_input {
+  viscor_dem_impact impact;
+  double target;
+};
+
+std::vector<dem_input> dem_inputs() {
+  std::mt19937_64 rng(56);
+  auto uniform = [&](double a, double b) { return a + (b - a) * static_cast<double>(rng() >> 11) * 0x1.0p-53; };
+  auto log_uniform = [&](double a, double b) { return std::exp(uniform(std::log(a), std::log(b))); };
+  std::vector<dem_input> out;
+  for (int i = 0; i < 1024; ++i) {
+    dem_input d{};
+    d.impact.bead = {log_uniform(1e7, 2e11), uniform(0.2, 0.45), log_uniform(1e-4, 2e-2), uniform(1000, 8000)};
+    d.impact.v0 = log_uniform(1e-3, 5);
+    d.impact.gravity = i % 2 ? 9.81 : 0.0;
+    d.target = uniform(0.1, 0.95);
+    out.push_back(d);
+  }
+  return out;
+}
+
+void BM_exported_c_dem(benchmark::State& state, int model, bool whole_deck) {
+  const auto inputs = dem_inputs();
+  for (auto _ : state)
+    for (const auto& d : inputs)
+      benchmark::DoNotOptimize(whole_deck ? viscor_dem_deck(static_cast<viscor_dem_model>(model), d.target, &d.impact).damping
+                                          : viscor_dem_damping_entry(static_cast<viscor_dem_model>(model), d.target, &d.impact));
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * inputs.size()));
+}
+
 const int registered = [] {
+  const std::pair<int, const char*> models[] = {{VISCOR_LAMMPS_VELOCITY, "lammps_velocity"},
+                                                {VISCOR_LAMMPS_MASS_VELOCITY, "lammps_mass_velocity"},
+                                                {VISCOR_LAMMPS_VISCOELASTIC, "lammps_viscoelastic"},
+                                                {VISCOR_LAMMPS_TSUJI, "lammps_tsuji"},
+                                                {VISCOR_LIGGGHTS_HERTZ, "liggghts_hertz"}};
+  for (const auto& [model, name] : models) {
+    benchmark::RegisterBenchmark((std::string("BM_exported_c_damping_entry/") + name).c_str(), BM_exported_c_dem, model,
+                                 false)->Unit(benchmark::kMicrosecond);
+    benchmark::RegisterBenchmark((std::string("BM_exported_c_dem_deck/") + name).c_str(), BM_exported_c_dem, model,
+                                 true)->Unit(benchmark::kMicrosecond);
+  }
   for (const char* law : {"linear", "hertz_linear_damping", "tsuji", "kuwabara_kono", "hunt_crossley"}) {
     for (const bool rebound_only : {false, true}) {
       const std::string suffix = std::string("/") + law + (rebound_only ? "/rebound" : "/mixed");

@@ -395,6 +395,257 @@ double viscor_damping_for(const viscor_surrogate* s, double e_target, double m, 
            viscor_damping_scale(s, m, k, v0);
 }
 
+/* ---- DEM codes' deck entries: dem/deck_convention.hpp and friends, in the same order ---- */
+
+static const double viscor_dk_pi = 3.141592653589793116; /* boost::math::constants::pi<double>() */
+
+static int viscor_dk_finite(double x) { return x == x && x - x == 0; }
+
+static int viscor_dk_valid_bead(const viscor_bead* b) {
+    return viscor_dk_finite(b->youngs_modulus) && b->youngs_modulus > 0 && viscor_dk_finite(b->poisson_ratio) &&
+           b->poisson_ratio > -1 && b->poisson_ratio <= 0.5 && viscor_dk_finite(b->radius) && b->radius > 0 &&
+           viscor_dk_finite(b->density) && b->density > 0;
+}
+
+static double viscor_dk_mass(const viscor_bead* b) {
+    return 4 * viscor_dk_pi * b->radius * b->radius * b->radius * b->density / 3;
+}
+
+static int viscor_dk_representable(double x) { return viscor_dk_finite(x) && x >= DBL_MIN; }
+
+/* dem/hertz_contact.hpp hertz_contact: E*, R*, m*, k. */
+typedef struct viscor_dk_contact {
+    double effective_modulus, effective_radius, effective_mass, stiffness;
+} viscor_dk_contact;
+
+static int viscor_dk_make_contact(const viscor_dem_impact* in, viscor_dk_contact* c) {
+    const viscor_bead* b = &in->bead;
+    const double mass = viscor_dk_mass(b);
+    if (!viscor_dk_valid_bead(b)) return 0;
+    if (!in->pair && in->wall_material) {
+        const double nu = in->wall_poisson_ratio;
+        double compliance;
+        if (!(viscor_dk_finite(in->wall_youngs_modulus) && in->wall_youngs_modulus > 0 && viscor_dk_finite(nu) &&
+              nu > -1 && nu <= 0.5))
+            return 0;
+        compliance = (1 - b->poisson_ratio * b->poisson_ratio) / b->youngs_modulus;
+        compliance += (1 - nu * nu) / in->wall_youngs_modulus;
+        c->effective_modulus = 1 / compliance;
+        c->effective_radius = b->radius;
+        c->effective_mass = mass;
+    } else if (in->pair && in->other_material) {
+        const viscor_bead* o = &in->other;
+        const double other_mass = viscor_dk_mass(o);
+        double compliance;
+        if (!viscor_dk_valid_bead(o)) return 0;
+        compliance = (1 - b->poisson_ratio * b->poisson_ratio) / b->youngs_modulus;
+        compliance += (1 - o->poisson_ratio * o->poisson_ratio) / o->youngs_modulus;
+        c->effective_modulus = 1 / compliance;
+        c->effective_radius = b->radius * o->radius / (b->radius + o->radius);
+        c->effective_mass = mass * other_mass / (mass + other_mass);
+    } else { /* a rigid wall or a bead like this one */
+        const double plane_strain_modulus = b->youngs_modulus / (1 - b->poisson_ratio * b->poisson_ratio);
+        c->effective_modulus = in->pair ? plane_strain_modulus / 2 : plane_strain_modulus;
+        c->effective_radius = in->pair ? b->radius / 2 : b->radius;
+        c->effective_mass = in->pair ? mass / 2 : mass;
+    }
+    c->stiffness = 4 * c->effective_modulus * sqrt(c->effective_radius) / 3;
+    return viscor_dk_representable(c->effective_mass) && viscor_dk_representable(c->effective_radius) &&
+           viscor_dk_representable(c->stiffness);
+}
+
+static const char* viscor_dk_law(viscor_dem_model model) {
+    switch (model) {
+    case VISCOR_LAMMPS_VELOCITY: case VISCOR_LAMMPS_MASS_VELOCITY: return "hertz_linear_damping";
+    case VISCOR_LAMMPS_VISCOELASTIC: return "kuwabara_kono";
+    case VISCOR_LAMMPS_TSUJI: case VISCOR_LIGGGHTS_HERTZ: return "tsuji";
+    }
+    return 0;
+}
+
+/* deck_convention.hpp damping_scale: gamma0 per unit damping number D. */
+static double viscor_dk_damping_scale(viscor_dem_model model, const viscor_dk_contact* c) {
+    const double k = c->stiffness, m = c->effective_mass;
+    switch (model) {
+    case VISCOR_LAMMPS_VELOCITY: return 1 / k;
+    case VISCOR_LAMMPS_MASS_VELOCITY: return m / k;
+    case VISCOR_LAMMPS_VISCOELASTIC: return 2 * m * sqrt(c->effective_radius) / (3 * k);
+    case VISCOR_LAMMPS_TSUJI: return 4 * sqrt(m * k) / (5 * k);
+    case VISCOR_LIGGGHTS_HERTZ: return 4 * sqrt(5.0) * sqrt(m * k) / (5 * k);
+    }
+    return NAN;
+}
+
+/* builtin_conversions.hpp lammps_tsuji_damping: LAMMPS's polynomial eta'(e). */
+static double viscor_dk_tsuji_damping(double e) {
+    double p = 4.8218;
+    p = p * e - 18.022;
+    p = p * e + 27.467;
+    p = p * e - 22.348;
+    p = p * e + 11.087;
+    p = p * e - 4.2783;
+    p = p * e + 1.2728;
+    return p;
+}
+
+/* builtin_conversions.hpp lammps_tsuji_deck_e: bisection to neighbouring doubles. */
+static double viscor_dk_tsuji_deck_e(double damping) {
+    double lo = 0, hi = 1;
+    int i;
+    if (!(damping >= viscor_dk_tsuji_damping(1) && damping <= viscor_dk_tsuji_damping(0))) return NAN;
+    for (i = 0; i < 4 * DBL_MANT_DIG + 1100; ++i) {
+        const double mid = (lo + hi) / 2;
+        if (mid == lo || mid == hi) break;
+        if (viscor_dk_tsuji_damping(mid) >= damping)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    return fabs(viscor_dk_tsuji_damping(hi) - damping) < fabs(viscor_dk_tsuji_damping(lo) - damping) ? hi : lo;
+}
+
+/* builtin_conversions.hpp liggghts_damping_ratio |b(e)| and liggghts_deck_e. */
+static double viscor_dk_liggghts_ratio(double e) {
+    const double l = log(e);
+    return -l / sqrt(l * l + viscor_dk_pi * viscor_dk_pi);
+}
+
+static double viscor_dk_liggghts_deck_e(double b) {
+    if (!(b >= 0 && b < 1)) return NAN;
+    return exp(-viscor_dk_pi * b / sqrt(1 - b * b));
+}
+
+/* deck_convention.hpp damping_number and deck_damping_for. */
+static double viscor_dk_damping_number(viscor_dem_model model, double entry) {
+    if (model == VISCOR_LAMMPS_TSUJI) return viscor_dk_tsuji_damping(entry);
+    if (model == VISCOR_LIGGGHTS_HERTZ) return viscor_dk_liggghts_ratio(entry);
+    return entry;
+}
+
+static double viscor_dk_deck_damping_for(viscor_dem_model model, double damping) {
+    if (model == VISCOR_LAMMPS_TSUJI) return viscor_dk_tsuji_deck_e(damping);
+    if (model == VISCOR_LIGGGHTS_HERTZ) return viscor_dk_liggghts_deck_e(damping);
+    return damping;
+}
+
+static int viscor_dk_valid_impact(viscor_dem_model model, const viscor_dem_impact* in) {
+    return in && (int)model >= 0 && (int)model <= 4 && viscor_dk_finite(in->v0) && in->v0 > 0 &&
+           viscor_dk_finite(in->gravity) && in->gravity >= 0 && viscor_dk_finite(in->force);
+}
+
+/* The contact, its surrogate, m, k and the load felt (gravity drops out of a pair). */
+typedef struct viscor_dk_setup {
+    viscor_dk_contact c;
+    const viscor_surrogate* s;
+    double gravity;
+} viscor_dk_setup;
+
+static viscor_deck_status viscor_dk_set_up(viscor_dem_model model, const viscor_dem_impact* in, viscor_dk_setup* u) {
+    if (!viscor_dk_valid_impact(model, in) || !viscor_dk_make_contact(in, &u->c)) return VISCOR_DECK_INVALID_INPUT;
+    u->s = viscor_surrogate_named(viscor_dk_law(model));
+    if (!u->s) return VISCOR_DECK_NO_SURROGATE;
+    u->gravity = in->pair ? 0.0 : in->gravity;
+    return VISCOR_DECK_OK;
+}
+
+/* The e of a deck damping entry at this impact (dem_calibration.hpp e_for_deck, by the surrogate). */
+static double viscor_dk_e_for_entry(viscor_dem_model model, const viscor_dk_setup* u, const viscor_dem_impact* in,
+                                    double entry) {
+    const double gamma0 = viscor_dk_damping_number(model, entry) * viscor_dk_damping_scale(model, &u->c);
+    return viscor_cor_physical(u->s, u->c.effective_mass, u->c.stiffness, gamma0, in->v0, u->gravity, in->force).e;
+}
+
+static viscor_deck viscor_dk_no_deck(viscor_deck_status status) {
+    viscor_deck d;
+    d.status = status;
+    d.damping = d.damping_number = d.gamma0 = d.youngs_modulus = d.poisson_ratio = NAN;
+    d.wall_youngs_modulus = d.wall_poisson_ratio = d.other_youngs_modulus = d.other_poisson_ratio = NAN;
+    d.cross_youngs_modulus = d.bead_bead_youngs_modulus = d.bead_bead_damping = d.other_other_damping = NAN;
+    d.builtin_e = NAN;
+    return d;
+}
+
+/* The contact's own deck (dem_calibration.hpp dem_deck_for and complete_deck), without
+   the like-bead entries. */
+static viscor_deck viscor_dk_deck(viscor_dem_model model, double e_target, const viscor_dem_impact* in) {
+    viscor_dk_setup u;
+    viscor_deck d = viscor_dk_no_deck(VISCOR_DECK_OK);
+    const viscor_deck_status status = viscor_dk_set_up(model, in, &u);
+    double g;
+    if (status != VISCOR_DECK_OK) return viscor_dk_no_deck(status);
+    if (!(e_target >= 0.01 && e_target < 1)) return viscor_dk_no_deck(VISCOR_DECK_INVALID_INPUT);
+    g = viscor_scaled_g(u.s, u.c.effective_mass, u.c.stiffness, in->v0, u.gravity, in->force);
+    if (!(g >= u.s->g_min && g <= u.s->g_max)) return viscor_dk_no_deck(VISCOR_DECK_UNREACHABLE);
+    d.gamma0 = viscor_gamma_for(u.s, e_target, g) /
+               viscor_damping_scale(u.s, u.c.effective_mass, u.c.stiffness, in->v0);
+    if (d.gamma0 != d.gamma0) return viscor_dk_no_deck(VISCOR_DECK_UNREACHABLE);
+    d.damping_number = d.gamma0 / viscor_dk_damping_scale(model, &u.c);
+    d.damping = viscor_dk_deck_damping_for(model, d.damping_number);
+    if (d.damping != d.damping) return viscor_dk_no_deck(VISCOR_DECK_UNREACHABLE);
+    /* deck_convention.hpp deck_youngs_modulus; LAMMPS's wall reads only its own entry */
+    if (!in->pair && model != VISCOR_LIGGGHTS_HERTZ)
+        d.youngs_modulus = in->wall_material ? 2 * (1 - in->bead.poisson_ratio) * u.c.effective_modulus
+                                             : 2 * in->bead.youngs_modulus / (1 + in->bead.poisson_ratio);
+    else
+        d.youngs_modulus = in->bead.youngs_modulus;
+    d.poisson_ratio = in->bead.poisson_ratio;
+    if (model == VISCOR_LIGGGHTS_HERTZ && !in->pair) { /* wall_deck_modulus: the wall type's own */
+        d.wall_youngs_modulus = in->wall_material ? in->wall_youngs_modulus : 1e30;
+        if (in->wall_material) d.wall_poisson_ratio = in->wall_poisson_ratio;
+    }
+    if (in->pair && in->other_material) {
+        d.other_youngs_modulus = in->other.youngs_modulus;
+        d.other_poisson_ratio = in->other.poisson_ratio;
+        if (model != VISCOR_LIGGGHTS_HERTZ) /* lammps_cross_modulus */
+            d.cross_youngs_modulus = 2 * (1 - d.poisson_ratio * d.poisson_ratio) * u.c.effective_modulus;
+    }
+    if (model == VISCOR_LAMMPS_TSUJI || model == VISCOR_LIGGGHTS_HERTZ)
+        d.builtin_e = viscor_dk_e_for_entry(model, &u, in, e_target);
+    return d;
+}
+
+/* deck_entries.hpp like_beads_impact: two beads like `bead`, the same speed, no load. */
+static viscor_dem_impact viscor_dk_like_beads(const viscor_dem_impact* in, const viscor_bead* bead) {
+    viscor_dem_impact pair = *in;
+    pair.bead = *bead;
+    pair.pair = 1, pair.wall_material = 0, pair.other_material = 0;
+    pair.gravity = 0, pair.force = 0;
+    return pair;
+}
+
+viscor_deck viscor_dem_deck(viscor_dem_model model, double e_target, const viscor_dem_impact* impact) {
+    viscor_deck d = viscor_dk_deck(model, e_target, impact);
+    if (d.status != VISCOR_DECK_OK) return d;
+    if (!impact->pair || impact->other_material) { /* deck_entries.hpp: the like-bead entries read apart */
+        const viscor_dem_impact like = viscor_dk_like_beads(impact, &impact->bead);
+        const viscor_deck b = viscor_dk_deck(model, e_target, &like);
+        if (b.status != VISCOR_DECK_OK) return viscor_dk_no_deck(b.status);
+        if (!impact->pair) d.bead_bead_youngs_modulus = b.youngs_modulus;
+        d.bead_bead_damping = b.damping;
+        if (impact->pair) {
+            const viscor_dem_impact other = viscor_dk_like_beads(impact, &impact->other);
+            const viscor_deck o = viscor_dk_deck(model, e_target, &other);
+            if (o.status != VISCOR_DECK_OK) return viscor_dk_no_deck(o.status);
+            d.other_other_damping = o.damping;
+        }
+    }
+    return d;
+}
+
+double viscor_dem_damping_entry(viscor_dem_model model, double e_target, const viscor_dem_impact* impact) {
+    return viscor_dk_deck(model, e_target, impact).damping;
+}
+
+double viscor_dem_e_for_entry(viscor_dem_model model, double deck_damping, const viscor_dem_impact* impact) {
+    viscor_dk_setup u;
+    if (viscor_dk_set_up(model, impact, &u) != VISCOR_DECK_OK || !viscor_dk_finite(deck_damping)) return NAN;
+    if (model == VISCOR_LAMMPS_TSUJI ? !(deck_damping >= 0 && deck_damping <= 1)
+        : model == VISCOR_LIGGGHTS_HERTZ ? !(deck_damping > 0 && deck_damping <= 1)
+        : !(deck_damping >= 0))
+        return NAN;
+    return viscor_dk_e_for_entry(model, &u, impact, deck_damping);
+}
+
 /* ---- linear (alpha = 1, beta = 1) ---- */
 
 static const double viscor_sg_linear_threshold_break[9] = {
@@ -8261,4 +8512,4 @@ const viscor_surrogate* viscor_surrogate_named(const char* law) {
     if (law && viscor_sg_names_equal(law, "hunt_crossley")) return &viscor_surrogate_hunt_crossley;
     return 0;
 }
-/* viscor sha256 cd16a7291f1ac0000aede28eced038dd5959e450cfae17f1c00a423071bc3d26 */
+/* viscor sha256 09a1ae7caf9bf063045e00b7f1efd9130b841931852c67f6dd5b1c8ea8d545e1 */

@@ -214,6 +214,72 @@ viscor_cor viscor_cor_physical(const viscor_surrogate* s, double m, double k, do
 double viscor_damping_for(const viscor_surrogate* s, double e_target, double m, double k, double v0,
                           double gravity, double force);
 
+/* ---- DEM codes' deck entries (docs/dem.md, "Vendoring the C export") ---- */
+
+/* A DEM code's damping model, as `viscor dem CODE --damping MODEL` names it. */
+typedef enum viscor_dem_model {
+    VISCOR_LAMMPS_VELOCITY = 0,      /* lammps hertz/material, damping velocity (deck: damp) */
+    VISCOR_LAMMPS_MASS_VELOCITY = 1, /* lammps hertz/material, damping mass_velocity (deck: damp) */
+    VISCOR_LAMMPS_VISCOELASTIC = 2,  /* lammps hertz/material, damping viscoelastic (deck: damp) */
+    VISCOR_LAMMPS_TSUJI = 3,         /* lammps hertz/material, damping tsuji (deck: an e) */
+    VISCOR_LIGGGHTS_HERTZ = 4        /* liggghts model hertz (deck: coefficientRestitution) */
+} viscor_dem_model;
+
+/* A bead's material and size, SI. */
+typedef struct viscor_bead {
+    double youngs_modulus; /* Pa */
+    double poisson_ratio;  /* in (-1, 0.5] */
+    double radius;         /* m */
+    double density;        /* kg/m^3 */
+} viscor_bead;
+
+/* One impact as the code sees it. */
+typedef struct viscor_dem_impact {
+    viscor_bead bead;
+    int pair;           /* 0: the bead hits a wall; 1: a second bead */
+    int wall_material;  /* wall: 0 rigid; 1 of wall_youngs_modulus (Pa), wall_poisson_ratio */
+    double wall_youngs_modulus, wall_poisson_ratio;
+    int other_material; /* pair: 0 a bead like the first; 1 the bead `other` */
+    viscor_bead other;
+    double v0;      /* impact (approach) speed, m/s, > 0 */
+    double gravity; /* m/s^2 towards the wall, >= 0 (drops out of a pair) */
+    double force;   /* N pressing the bead on the wall (or the pair together) */
+} viscor_dem_impact;
+
+/* Why a deck has no entries. */
+typedef enum viscor_deck_status {
+    VISCOR_DECK_OK = 0,
+    VISCOR_DECK_INVALID_INPUT = 1, /* an input out of its range (as viscor dem refuses it) */
+    VISCOR_DECK_UNREACHABLE = 2,   /* no entry of the model gives e_target at this impact */
+    VISCOR_DECK_NO_SURROGATE = 3   /* the model's law is not in this export */
+} viscor_deck_status;
+
+/* The numbers the code's input takes, as `viscor dem CODE --damping MODEL --method
+   surrogate` prints them (the same doubles); NaN for an entry the code does not read. */
+typedef struct viscor_deck {
+    viscor_deck_status status;   /* the rest is NaN unless VISCOR_DECK_OK */
+    double damping;              /* the deck's damping entry: a coefficient, or an e (tsuji, hertz) */
+    double damping_number;       /* D, what the code multiplies its damping force by */
+    double gamma0;               /* viscor's damping of F = k x^alpha + gamma0 k d/dt(x^beta) */
+    double youngs_modulus;       /* the bead type's deck modulus (LAMMPS's wall reads it scaled) */
+    double poisson_ratio;
+    double wall_youngs_modulus;  /* LIGGGHTS's wall type (1e30: rigid) */
+    double wall_poisson_ratio;   /* the wall's material, when it has one */
+    double other_youngs_modulus, other_poisson_ratio; /* a pair's second bead type */
+    double cross_youngs_modulus; /* LAMMPS, two bead types: the explicit pair_coeff 1 2 modulus */
+    double bead_bead_youngs_modulus, bead_bead_damping; /* the like-bead entries (1,1) a code reads apart */
+    double other_other_damping;  /* the second type's like-bead entry (2,2) */
+    double builtin_e;            /* tsuji, hertz: the e the code's own conversion gives for e_target */
+} viscor_deck;
+
+/* The deck entries that give e_target (0.01 <= e_target < 1) at this impact, the
+   calibration by the surrogate's inverse at the impact's scaled load. */
+viscor_deck viscor_dem_deck(viscor_dem_model model, double e_target, const viscor_dem_impact* impact);
+/* The damping entry alone (NaN where viscor_dem_deck has no entries). */
+double viscor_dem_damping_entry(viscor_dem_model model, double e_target, const viscor_dem_impact* impact);
+/* The e a deck damping entry gives at this impact (NaN for an invalid entry or impact). */
+double viscor_dem_e_for_entry(viscor_dem_model model, double deck_damping, const viscor_dem_impact* impact);
+
 /* The laws of this export. */
 extern const viscor_surrogate viscor_surrogate_linear; /* alpha = 1, beta = 1 */
 extern const viscor_surrogate viscor_surrogate_hertz_linear_damping; /* alpha = 3/2, beta = 1 */
@@ -226,4 +292,4 @@ extern const viscor_surrogate viscor_surrogate_hunt_crossley; /* alpha = 3/2, be
 #endif
 
 #endif /* VISCOR_SURROGATES_H */
-/* viscor sha256 3ffc6dcd21cedc553ecc4564e9d036e91a75bbf8f065b10a584d2dc46980adf0 */
+/* viscor sha256 7bf62b16a6676afb4a5c16431c432764ca7a9392ff3bdf9939fc49690f100f8d */

@@ -3,6 +3,7 @@
 #include <viscor/jobs/dem_job.hpp>
 
 #include <viscor/jobs/files.hpp>
+#include <viscor/jobs/surrogate_files.hpp>
 #include <viscor/jobs/physical_inputs.hpp>
 #include <viscor/jobs/unit_checks.hpp>
 #include <viscor/core/precision.hpp>
@@ -11,10 +12,12 @@
 #include <viscor/dem/deck_entries.hpp>
 #include <viscor/dem/dem_calibration.hpp>
 #include <viscor/dem/drop_deck.hpp>
+#include <viscor/dem/surrogate_deck.hpp>
 #include <viscor/dem/variable_block.hpp>
 
 #include <chrono>
 #include <filesystem>
+#include <type_traits>
 
 namespace viscor::jobs {
 
@@ -128,6 +131,7 @@ struct dem_job : dem_request {
                               " " + drop_deck_path + ": a YADE script must end in .py (yade -x "
                               "silently skips other files)");
     if (!variables_path.empty()) check_variables_request(model, reverse);
+    check_method(model, reverse);
     refuse_outputs_not_ours();  // before any work: a foreign file, a FIFO or a directory
     if (!reverse) {
       require(target_e, VISCOR_FIELD("target_e"), "the measured coefficient of restitution, 0 < e < 1");
@@ -173,11 +177,20 @@ struct dem_job : dem_request {
     const auto of = [](const Real& x) { return working_number::of(x); };
     impact.v0 = parse_real<Real>(v0, "v0");
     const Real target = parse_real<Real>(target_e, "target_e");
-    calibration_options<Real> options;
-    const dem::dem_deck<Real> d = dem::dem_deck_for(model, impact, target, options);
     dem_forward out;
+    dem::dem_deck<Real> d;
+    if (method == "surrogate") {
+      if constexpr (std::is_same_v<Real, double>) {
+        const surrogate::cor_surrogate& s = surrogate_of(model);
+        d = dem::dem_deck_by_surrogate(model, impact, target, s);
+        out.deck = dem::deck_entries_by_surrogate(model, impact, d, target, s);
+        out.surrogate_bound = s.bound;
+      }
+    } else {
+      d = dem::dem_deck_for(model, impact, target, calibration_options<Real>{});
+      out.deck = dem::deck_entries_for(model, impact, d, target);
+    }
     out.target_e = target_e;
-    out.deck = dem::deck_entries_for(model, impact, d, target);
     out.damping_number = of(d.damping_number);
     out.gamma0 = of(d.gamma0);
     out.gamma = of(d.calibration.scaled.gamma), out.g = of(d.calibration.scaled.g);
@@ -218,6 +231,30 @@ struct dem_job : dem_request {
                                                              to_decimal_string(timing.contact_time)));
     out.drop_deck_path = drop_deck_path, out.variables_path = variables_path;
     return out;
+  }
+
+  /// The committed surrogate of the model's law, checked against its verification table.
+  static const surrogate::cor_surrogate& surrogate_of(const dem::dem_model& model) {
+    const contact_law law = dem::law_of(model);
+    const surrogate::cor_surrogate* s = find_surrogate(law);
+    if (!s || !s->bound.verified())
+      throw invalid_parameter(VISCOR_FIELD("method") " surrogate: no surrogate for " + law.describe() +
+                              " (looked in '" + surrogate_directory() + "'; docs/surrogate.md)");
+    return *s;
+  }
+
+  /// Method surrogate: a forward deck in double, of a model the surrogates describe.
+  void check_method(const dem::dem_model& model, bool reverse) const {
+    if (method == "solve") return;
+    if (method != "surrogate")
+      throw invalid_parameter(VISCOR_FIELD("method") " must be solve or surrogate, got '" + method + "'");
+    if (reverse)
+      throw invalid_parameter(VISCOR_FIELD("method") " surrogate calibrates a deck for " VISCOR_FIELD("target_e")
+                              "; the e of a deck entry is solved (method solve)");
+    if (digits > 15)
+      throw invalid_parameter(VISCOR_FIELD("method") " surrogate computes in double: " VISCOR_FIELD("digits")
+                              " must be at most 15, got " + std::to_string(digits));
+    dem::require_surrogate_model(model);
   }
 
   /// --variables: LAMMPS and LIGGGHTS only (a YADE script asks viscor itself), forward only.

@@ -55,6 +55,19 @@ class SameAsTheCli(unittest.TestCase):
         mine.pop("seconds", None)
         self.assertEqual(mine, cli)
 
+    def test_dem_by_surrogate(self):
+        # The C export's entries (docs/dem.md): the same method in Python and on the command line.
+        options = dict(damping="hertz", youngs_modulus="3e9", poisson_ratio="0.35", radius="1e-3", density="1200",
+                       target_e="0.5", v0="0.01", gravity="9.81", method="surrogate")
+        r = viscor.dem("liggghts", **options)
+        cli = cli_json("dem", "liggghts", *[w for k, v in options.items() for w in ("--" + k.replace("_", "-"), v)])
+        cli.pop("seconds", None)
+        mine = r.to_dict()
+        mine.pop("seconds", None)
+        self.assertEqual(mine, cli)
+        self.assertEqual(mine["method"], "surrogate")
+        self.assertIn("error_bound", mine)
+
 
 def without_timings(value):
     """A JSON value with every "seconds" field (a timing, at any depth) removed."""

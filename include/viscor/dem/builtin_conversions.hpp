@@ -20,10 +20,8 @@
 #include <viscor/scenes/calibration.hpp>
 
 #include <boost/math/constants/constants.hpp>
-#include <boost/math/tools/roots.hpp>
+#include <boost/math/tools/precision.hpp>
 
-#include <cstdint>
-#include <utility>
 
 namespace viscor::dem {
 
@@ -105,13 +103,20 @@ Real lammps_tsuji_deck_e(const Real& damping) {
     throw unreachable_target("LAMMPS tsuji damping " + to_decimal_string(damping) +
                              " is outside what a deck e in [0, 1] gives, [" + to_decimal_string(lo_value) + ", " +
                              to_decimal_string(hi_value) + "]");
-  auto f = [&](const Real& e) { return Real(lammps_tsuji_damping(e) - damping); };
-  // The polynomial decreases on [0, 1] (checked on a 1001-point grid, see docs/dem.md).
-  std::uintmax_t iterations = 400;
-  const auto tol = boost::math::tools::eps_tolerance<Real>(boost::math::tools::digits<Real>() - 2);
-  const std::pair<Real, Real> r = boost::math::tools::toms748_solve(f, Real(0), Real(1), Real(hi_value - damping),
-                                                                     Real(lo_value - damping), tol, iterations);
-  return Real((r.first + r.second) / 2);
+  // NOTE: plain bisection down to two neighbouring numbers, then the one whose polynomial
+  // is nearer: the C export (jobs/dem_export) states the same steps in C, so the deck e is
+  // the same bits there. The polynomial decreases on [0, 1] (checked on a 1001-point grid,
+  // see docs/dem.md); the iteration cap only guards a type whose midpoints never settle.
+  Real lo = 0, hi = 1;  // lammps_tsuji_damping(lo) >= damping >= lammps_tsuji_damping(hi)
+  for (int i = 0; i < 4 * boost::math::tools::digits<Real>() + 1100; ++i) {
+    const Real mid = (lo + hi) / 2;
+    if (mid == lo || mid == hi) break;
+    if (lammps_tsuji_damping(mid) >= damping)
+      lo = mid;
+    else
+      hi = mid;
+  }
+  return abs(lammps_tsuji_damping(hi) - damping) < abs(lammps_tsuji_damping(lo) - damping) ? hi : lo;
 }
 
 /// The e whose LIGGGHTS damping ratio is b, for b in [0, 1): e = exp(-pi b / sqrt(1 - b^2)).

@@ -20,21 +20,21 @@ bool reads_like_beads_separately(const dem_model& model, const dem_impact<Real>&
   return model.code != dem_code::yade && (impact.kind == contact_kind::wall || impact.partner.other);
 }
 
-/// The deck of two beads like `bead` at the same e and approach speed without load (gravity drops out of a pair).
+/// The impact of two beads like `bead` at the same approach speed without load (gravity drops out of a pair).
 template <class Real>
-dem_deck<Real> like_beads_deck(const dem_model& model, const dem_impact<Real>& impact, const bead_material<Real>& bead,
-                               const Real& target) {
+dem_impact<Real> like_beads_impact(const dem_impact<Real>& impact, const bead_material<Real>& bead) {
   dem_impact<Real> pair = impact;
   pair.bead = bead;
   pair.kind = contact_kind::pair, pair.partner = {}, pair.gravity = 0, pair.force = 0;
-  return dem_deck_for(model, pair, target);
+  return pair;
 }
 
 /// The deck values as written into the input (deck_number), with the like-bead entries where the code
-/// reads them apart.
-template <class Real>
+/// reads them apart, calibrated by make_deck(model, impact, target) as the contact's deck was
+/// (dem_deck_for, or the surrogate's deck of dem/surrogate_deck.hpp).
+template <class Real, class MakeDeck>
 deck_strings deck_entries_for(const dem_model& model, const dem_impact<Real>& impact, const dem_deck<Real>& d,
-                              const Real& target) {
+                              const Real& target, MakeDeck make_deck) {
   deck_strings s;
   s.damping = deck_number(d.damping);
   s.wall_material = impact.partner.wall.has_value();
@@ -53,13 +53,22 @@ deck_strings deck_entries_for(const dem_model& model, const dem_impact<Real>& im
   put(s.other_youngs_modulus, d.other_youngs_modulus), put(s.other_poisson_ratio, d.other_poisson_ratio);
   put(s.cross_youngs_modulus, d.cross_youngs_modulus);
   if (reads_like_beads_separately(model, impact)) {
-    const dem_deck<Real> like = like_beads_deck(model, impact, impact.bead, target);
+    const dem_deck<Real> like = make_deck(model, like_beads_impact(impact, impact.bead), target);
     if (impact.kind == contact_kind::wall) s.bead_bead_youngs_modulus = deck_number(like.youngs_modulus);
     s.bead_bead_damping = deck_number(like.damping);
     if (impact.partner.other)
-      s.other_other_damping = deck_number(like_beads_deck(model, impact, *impact.partner.other, target).damping);
+      s.other_other_damping = deck_number(make_deck(model, like_beads_impact(impact, *impact.partner.other), target).damping);
   }
   return s;
+}
+
+/// deck_entries_for with the like-bead decks calibrated exactly (dem_deck_for).
+template <class Real>
+deck_strings deck_entries_for(const dem_model& model, const dem_impact<Real>& impact, const dem_deck<Real>& d,
+                              const Real& target) {
+  return deck_entries_for(model, impact, d, target, [](const dem_model& m, const dem_impact<Real>& i, const Real& t) {
+    return dem_deck_for(m, i, t);
+  });
 }
 
 }  // namespace viscor::dem

@@ -147,31 +147,42 @@ struct dem_deck {
   std::optional<Real> builtin_tc;  ///< YADE visco-elastic: the tc that, with en = target, gives YADE's kn = k, s
 };
 
-/// The deck that reproduces target_e at this impact; unreachable_target when no
-/// deck entry of the model can (the message says why).
+/// Refuses a target or load no deck can be calibrated for, before any work.
 template <class Real>
-dem_deck<Real> dem_deck_for(const dem_model& model, const dem_impact<Real>& impact, const Real& target_e,
-                            const calibration_options<Real>& options = {}) {
+void check_deck_request(const dem_impact<Real>& impact, const Real& target_e) {
   require_finite(target_e, "target_e");
   if (!(target_e > 0 && target_e < 1))
     throw invalid_parameter("parameter target_e must be in (0, 1), got " + to_decimal_string(target_e));
   require_positive(impact.v0, "v0");
   require_gravity_towards_wall(impact.gravity);
   require_finite(impact.force, "force");
-  dem_deck<Real> d;
-  d.contact = model_contact(model, impact);
+}
+
+/// The exact calibration of the deck's contact: gamma0 whose e is target_e, by the
+/// Taylor solve (or the clamped force's solve for models that clamp).
+template <class Real>
+physical_calibration<Real> calibrate_deck(const dem_model& model, const dem_impact<Real>& impact,
+                                          const hertz_contact<Real>& contact, const Real& target_e,
+                                          const calibration_options<Real>& options) {
   const contact_law law = law_of(model);
-  const physical_parameters<Real> p = physical_impact(d.contact, impact, Real(0));
-  if (model.clamped) {
-    physical_parameters<Real> unit = p;
-    unit.gamma0 = 1;  // scaled gamma is proportional to gamma0; g does not depend on it
-    const scaled_parameters<Real> s = to_scaled(law, unit);
-    d.calibration.scaled = calibrate_clamped_gamma(law, s.g, target_e, options);
-    d.calibration.gamma0 = d.calibration.scaled.gamma / s.gamma;
-    d.calibration.time_scale = s.time_scale;
-  } else {
-    d.calibration = calibrate_gamma0(law, p.m, p.k, p.v0, p.gravity, p.force, target_e, options);
-  }
+  const physical_parameters<Real> p = physical_impact(contact, impact, Real(0));
+  if (!model.clamped) return calibrate_gamma0(law, p.m, p.k, p.v0, p.gravity, p.force, target_e, options);
+  physical_parameters<Real> unit = p;
+  unit.gamma0 = 1;  // scaled gamma is proportional to gamma0; g does not depend on it
+  const scaled_parameters<Real> s = to_scaled(law, unit);
+  physical_calibration<Real> c;
+  c.scaled = calibrate_clamped_gamma(law, s.g, target_e, options);
+  c.gamma0 = c.scaled.gamma / s.gamma;
+  c.time_scale = s.time_scale;
+  return c;
+}
+
+/// Everything of the deck after its calibration (d.contact and d.calibration set): the
+/// damping number, the deck's damping entry, the moduli, and the e the code's own
+/// conversion gives, by e_of_entry(deck damping entry) (the exact solve or a surrogate).
+template <class Real, class EOfEntry>
+void complete_deck(const dem_model& model, const dem_impact<Real>& impact, const Real& target_e, dem_deck<Real>& d,
+                   EOfEntry e_of_entry) {
   d.gamma0 = d.calibration.gamma0;
   d.damping_number = d.gamma0 / damping_scale(model, d.contact);
   try {
@@ -189,8 +200,8 @@ dem_deck<Real> dem_deck_for(const dem_model& model, const dem_impact<Real>& impa
     d.builtin_tc = yade_viscel_tc_for_stiffness(d.contact.stiffness, target_e, reduced_mass);
     const Real contact_cn = yade_viscel_from_tc_en(*d.builtin_tc, target_e, reduced_mass).cn;
     const Real deck_cn = impact.kind == contact_kind::wall ? contact_cn : Real(2 * contact_cn);
-    d.builtin_e = e_for_deck(model, impact, deck_cn, options.solve).e;
-    return d;
+    d.builtin_e = e_of_entry(deck_cn);
+    return;
   }
   d.youngs_modulus = deck_youngs_modulus(model, impact.bead, d.contact, impact.partner);
   d.poisson_ratio = impact.bead.poisson_ratio;
@@ -203,10 +214,22 @@ dem_deck<Real> dem_deck_for(const dem_model& model, const dem_impact<Real>& impa
     d.other_poisson_ratio = impact.partner.other->poisson_ratio;
     if (model.code == dem_code::lammps) d.cross_youngs_modulus = lammps_cross_modulus(d.contact, d.poisson_ratio);
   }
-  if (model.deck_kind == deck_damping_kind::coefficient_of_restitution)
-    d.builtin_e = e_for_deck(model, impact, target_e, options.solve).e;
+  if (model.deck_kind == deck_damping_kind::coefficient_of_restitution) d.builtin_e = e_of_entry(target_e);
   if (model.damping == damping_model::mindlin)  // the deck's `en` instead of betan: Thornton's fit
-    d.builtin_e = e_for_deck(model, impact, yade_thornton_betan(target_e), options.solve).e;
+    d.builtin_e = e_of_entry(yade_thornton_betan(target_e));
+}
+
+/// The deck that reproduces target_e at this impact; unreachable_target when no
+/// deck entry of the model can (the message says why).
+template <class Real>
+dem_deck<Real> dem_deck_for(const dem_model& model, const dem_impact<Real>& impact, const Real& target_e,
+                            const calibration_options<Real>& options = {}) {
+  check_deck_request(impact, target_e);
+  dem_deck<Real> d;
+  d.contact = model_contact(model, impact);
+  d.calibration = calibrate_deck(model, impact, d.contact, target_e, options);
+  complete_deck(model, impact, target_e, d,
+                [&](const Real& entry) { return e_for_deck(model, impact, entry, options.solve).e; });
   return d;
 }
 

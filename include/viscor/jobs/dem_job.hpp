@@ -13,6 +13,7 @@
 #include <viscor/dem/deck_snippet.hpp>
 #include <viscor/dem/dem_model.hpp>
 #include <viscor/dem/hertz_contact.hpp>
+#include <viscor/surrogate/cor_surrogate.hpp>
 
 #include <optional>
 #include <string>
@@ -40,6 +41,9 @@ struct dem_request {
   std::string drop_deck_path;    ///< forward: also write a complete single-bead drop deck here
   std::string variables_path;    ///< forward, LAMMPS/LIGGGHTS: also write the entries as a `variable` block here
   int digits = 15;               ///< working precision in decimal digits
+  /// Forward: solve (the calibration by the Taylor solve, at `digits`) or surrogate (the committed
+  /// surrogate's inverse in double, as the C export computes each code's entries: docs/dem.md).
+  std::string method = "solve";
   bool strict = false;           ///< refuse, not only warn about, implausible inputs
 
   /// The wall's and the other bead's inputs, under their field names.
@@ -71,6 +75,8 @@ struct dem_forward {
   std::string target_e;    ///< as given
   dem::deck_strings deck;  ///< the entries as written into the input (shortest doubles)
   working_number damping_number, gamma0, gamma, g, e, target_bound, time_scale;
+  /// Method surrogate: the surrogate's stated bound (target_bound is then |e - target| + its bound on e).
+  std::optional<surrogate::surrogate_bound> surrogate_bound;
   std::optional<dem_builtin> builtin;
   std::string snippet;  ///< the input lines, ready to paste
   working_number contact_time, time_step;  ///< s: how long the contact lasts, the recommended step

@@ -5,6 +5,7 @@
 #include <viscor/core/field_names.hpp>
 #include <viscor/jobs/dem_job.hpp>
 #include <viscor/jobs/json_fields.hpp>
+#include <viscor/jobs/surrogate_files.hpp>
 
 #include <sstream>
 #include <string>
@@ -63,6 +64,7 @@ inline void add_forward_json(jobs::json& j, const jobs::dem_result& r, const job
   deck["damping"] = s.damping;
   deck["damping_kind"] = r.model.deck_kind == dem::deck_damping_kind::coefficient ? "coefficient"
                                                                                    : "coefficient_of_restitution";
+  if (f.surrogate_bound) j[field::method] = "surrogate";
   j[field::target_e] = f.target_e;
   j["deck"] = deck;
   j["damping_number"] = number(f.damping_number);
@@ -71,6 +73,7 @@ inline void add_forward_json(jobs::json& j, const jobs::dem_result& r, const job
   j["g"] = number(f.g);
   j[field::e] = number(f.e);
   j[field::target_bound] = number(f.target_bound);
+  if (f.surrogate_bound) j["error_bound"] = jobs::surrogate_bound_json(*f.surrogate_bound);
   j["time_scale_s"] = number(f.time_scale);
   if (f.builtin) {
     j["builtin_e"] = number(f.builtin->e);
@@ -102,8 +105,11 @@ inline void write_forward_text(std::ostream& text, const jobs::dem_result& r, co
   text << "impact      e = " << f.target_e << " at v0 = " << q.v0 << " m/s, gravity = " << q.gravity
        << " m/s^2, force = " << q.force << " N\n"
        << "viscor      gamma0 = " << number(f.gamma0) << " (scaled gamma = " << number(f.gamma)
-       << ", g = " << number(f.g) << "), e = " << number(f.e) << "\n"
-       << "deck        ";
+       << ", g = " << number(f.g) << "), e = " << number(f.e) << "\n";
+  if (f.surrogate_bound)
+    text << "            by the committed surrogate's inverse in double (the C export's entries): |e - target| <= "
+         << f.target_bound.decimal(3) << "\n";
+  text << "deck        ";
   if (!s.stiffness.empty()) {
     text << "bead material kn = " << s.stiffness << " N/m, cn = " << s.damping << " N s/m\n";
     if (s.wall_youngs_modulus) text << "            wall material kn = cn = " << *s.wall_youngs_modulus << " (rigid)\n";

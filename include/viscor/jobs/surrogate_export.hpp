@@ -13,6 +13,7 @@
 #pragma once
 
 #include <viscor/core/exceptions.hpp>
+#include <viscor/jobs/dem_export.hpp>
 #include <viscor/jobs/files.hpp>
 #include <viscor/core/sha256.hpp>
 #include <viscor/jobs/surrogate_files.hpp>
@@ -672,14 +673,16 @@ inline std::vector<exported_file> surrogate_export_files(const surrogate_export_
 
   std::ostringstream h;
   h << detail::c_comment(base + ".h", laws) << "#ifndef " << guard << "\n#define " << guard << "\n\n"
-    << "#ifdef __cplusplus\nextern \"C\" {\n#endif\n" << detail::c_header_body << "\n/* The laws of this export. */\n";
+    << "#ifdef __cplusplus\nextern \"C\" {\n#endif\n" << detail::c_header_body << dem_entries_c_declarations()
+    << "\n/* The laws of this export. */\n";
   for (const auto& l : laws)
     h << "extern const viscor_surrogate viscor_surrogate_" << l.name << "; /* alpha = " << l.s.alpha
       << ", beta = " << l.s.beta << " */\n";
   h << "\n#ifdef __cplusplus\n}\n#endif\n\n#endif /* " << guard << " */\n";
 
   std::ostringstream c;
-  c << detail::c_comment(base + ".c", laws) << "#include \"" << base << ".h\"\n" << detail::c_source_body;
+  c << detail::c_comment(base + ".c", laws) << "#include \"" << base << ".h\"\n" << detail::c_source_body
+    << dem_entries_c_definitions();
   for (const auto& l : laws) {
     const std::string p = "viscor_sg_" + l.name;
     const auto& s = l.s;

@@ -1,0 +1,344 @@
+// The C text of each DEM code's entries (jobs/dem_export.hpp). The C restates, for
+// double, these steps of the library, each in the same order of operations:
+//   the contact      dem/hertz_contact.hpp make_hertz_contact, core/elastic_contact.hpp
+//   the calibration  dem/surrogate_deck.hpp (the surrogate's inverse at the scaled load)
+//   the conventions  dem/deck_convention.hpp damping_scale, deck_youngs_modulus, ...,
+//                    dem/builtin_conversions.hpp (LAMMPS's polynomial and its inverse,
+//                    LIGGGHTS's b(e)), dem/deck_entries.hpp (the like-bead entries)
+// tests/dem_export_test.cpp compiles the export with cc and compares every entry with
+// `viscor dem --method surrogate` bit for bit, so a convention changed on one side only
+// fails there. YADE's two laws clamp the force at zero, which the surrogates (of the
+// unclamped force) do not describe: they have no entry here.
+#include <viscor/jobs/dem_export.hpp>
+
+namespace viscor::jobs {
+
+namespace {
+
+constexpr const char* declarations = R"(
+/* ---- DEM codes' deck entries (docs/dem.md, "Vendoring the C export") ---- */
+
+/* A DEM code's damping model, as `viscor dem CODE --damping MODEL` names it. */
+typedef enum viscor_dem_model {
+    VISCOR_LAMMPS_VELOCITY = 0,      /* lammps hertz/material, damping velocity (deck: damp) */
+    VISCOR_LAMMPS_MASS_VELOCITY = 1, /* lammps hertz/material, damping mass_velocity (deck: damp) */
+    VISCOR_LAMMPS_VISCOELASTIC = 2,  /* lammps hertz/material, damping viscoelastic (deck: damp) */
+    VISCOR_LAMMPS_TSUJI = 3,         /* lammps hertz/material, damping tsuji (deck: an e) */
+    VISCOR_LIGGGHTS_HERTZ = 4        /* liggghts model hertz (deck: coefficientRestitution) */
+} viscor_dem_model;
+
+/* A bead's material and size, SI. */
+typedef struct viscor_bead {
+    double youngs_modulus; /* Pa */
+    double poisson_ratio;  /* in (-1, 0.5] */
+    double radius;         /* m */
+    double density;        /* kg/m^3 */
+} viscor_bead;
+
+/* One impact as the code sees it. */
+typedef struct viscor_dem_impact {
+    viscor_bead bead;
+    int pair;           /* 0: the bead hits a wall; 1: a second bead */
+    int wall_material;  /* wall: 0 rigid; 1 of wall_youngs_modulus (Pa), wall_poisson_ratio */
+    double wall_youngs_modulus, wall_poisson_ratio;
+    int other_material; /* pair: 0 a bead like the first; 1 the bead `other` */
+    viscor_bead other;
+    double v0;      /* impact (approach) speed, m/s, > 0 */
+    double gravity; /* m/s^2 towards the wall, >= 0 (drops out of a pair) */
+    double force;   /* N pressing the bead on the wall (or the pair together) */
+} viscor_dem_impact;
+
+/* Why a deck has no entries. */
+typedef enum viscor_deck_status {
+    VISCOR_DECK_OK = 0,
+    VISCOR_DECK_INVALID_INPUT = 1, /* an input out of its range (as viscor dem refuses it) */
+    VISCOR_DECK_UNREACHABLE = 2,   /* no entry of the model gives e_target at this impact */
+    VISCOR_DECK_NO_SURROGATE = 3   /* the model's law is not in this export */
+} viscor_deck_status;
+
+/* The numbers the code's input takes, as `viscor dem CODE --damping MODEL --method
+   surrogate` prints them (the same doubles); NaN for an entry the code does not read. */
+typedef struct viscor_deck {
+    viscor_deck_status status;   /* the rest is NaN unless VISCOR_DECK_OK */
+    double damping;              /* the deck's damping entry: a coefficient, or an e (tsuji, hertz) */
+    double damping_number;       /* D, what the code multiplies its damping force by */
+    double gamma0;               /* viscor's damping of F = k x^alpha + gamma0 k d/dt(x^beta) */
+    double youngs_modulus;       /* the bead type's deck modulus (LAMMPS's wall reads it scaled) */
+    double poisson_ratio;
+    double wall_youngs_modulus;  /* LIGGGHTS's wall type (1e30: rigid) */
+    double wall_poisson_ratio;   /* the wall's material, when it has one */
+    double other_youngs_modulus, other_poisson_ratio; /* a pair's second bead type */
+    double cross_youngs_modulus; /* LAMMPS, two bead types: the explicit pair_coeff 1 2 modulus */
+    double bead_bead_youngs_modulus, bead_bead_damping; /* the like-bead entries (1,1) a code reads apart */
+    double other_other_damping;  /* the second type's like-bead entry (2,2) */
+    double builtin_e;            /* tsuji, hertz: the e the code's own conversion gives for e_target */
+} viscor_deck;
+
+/* The deck entries that give e_target (0.01 <= e_target < 1) at this impact, the
+   calibration by the surrogate's inverse at the impact's scaled load. */
+viscor_deck viscor_dem_deck(viscor_dem_model model, double e_target, const viscor_dem_impact* impact);
+/* The damping entry alone (NaN where viscor_dem_deck has no entries). */
+double viscor_dem_damping_entry(viscor_dem_model model, double e_target, const viscor_dem_impact* impact);
+/* The e a deck damping entry gives at this impact (NaN for an invalid entry or impact). */
+double viscor_dem_e_for_entry(viscor_dem_model model, double deck_damping, const viscor_dem_impact* impact);
+)";
+
+constexpr const char* definitions = R"(
+/* ---- DEM codes' deck entries: dem/deck_convention.hpp and friends, in the same order ---- */
+
+static const double viscor_dk_pi = 3.141592653589793116; /* boost::math::constants::pi<double>() */
+
+static int viscor_dk_finite(double x) { return x == x && x - x == 0; }
+
+static int viscor_dk_valid_bead(const viscor_bead* b) {
+    return viscor_dk_finite(b->youngs_modulus) && b->youngs_modulus > 0 && viscor_dk_finite(b->poisson_ratio) &&
+           b->poisson_ratio > -1 && b->poisson_ratio <= 0.5 && viscor_dk_finite(b->radius) && b->radius > 0 &&
+           viscor_dk_finite(b->density) && b->density > 0;
+}
+
+static double viscor_dk_mass(const viscor_bead* b) {
+    return 4 * viscor_dk_pi * b->radius * b->radius * b->radius * b->density / 3;
+}
+
+static int viscor_dk_representable(double x) { return viscor_dk_finite(x) && x >= DBL_MIN; }
+
+/* dem/hertz_contact.hpp hertz_contact: E*, R*, m*, k. */
+typedef struct viscor_dk_contact {
+    double effective_modulus, effective_radius, effective_mass, stiffness;
+} viscor_dk_contact;
+
+static int viscor_dk_make_contact(const viscor_dem_impact* in, viscor_dk_contact* c) {
+    const viscor_bead* b = &in->bead;
+    const double mass = viscor_dk_mass(b);
+    if (!viscor_dk_valid_bead(b)) return 0;
+    if (!in->pair && in->wall_material) {
+        const double nu = in->wall_poisson_ratio;
+        double compliance;
+        if (!(viscor_dk_finite(in->wall_youngs_modulus) && in->wall_youngs_modulus > 0 && viscor_dk_finite(nu) &&
+              nu > -1 && nu <= 0.5))
+            return 0;
+        compliance = (1 - b->poisson_ratio * b->poisson_ratio) / b->youngs_modulus;
+        compliance += (1 - nu * nu) / in->wall_youngs_modulus;
+        c->effective_modulus = 1 / compliance;
+        c->effective_radius = b->radius;
+        c->effective_mass = mass;
+    } else if (in->pair && in->other_material) {
+        const viscor_bead* o = &in->other;
+        const double other_mass = viscor_dk_mass(o);
+        double compliance;
+        if (!viscor_dk_valid_bead(o)) return 0;
+        compliance = (1 - b->poisson_ratio * b->poisson_ratio) / b->youngs_modulus;
+        compliance += (1 - o->poisson_ratio * o->poisson_ratio) / o->youngs_modulus;
+        c->effective_modulus = 1 / compliance;
+        c->effective_radius = b->radius * o->radius / (b->radius + o->radius);
+        c->effective_mass = mass * other_mass / (mass + other_mass);
+    } else { /* a rigid wall or a bead like this one */
+        const double plane_strain_modulus = b->youngs_modulus / (1 - b->poisson_ratio * b->poisson_ratio);
+        c->effective_modulus = in->pair ? plane_strain_modulus / 2 : plane_strain_modulus;
+        c->effective_radius = in->pair ? b->radius / 2 : b->radius;
+        c->effective_mass = in->pair ? mass / 2 : mass;
+    }
+    c->stiffness = 4 * c->effective_modulus * sqrt(c->effective_radius) / 3;
+    return viscor_dk_representable(c->effective_mass) && viscor_dk_representable(c->effective_radius) &&
+           viscor_dk_representable(c->stiffness);
+}
+
+static const char* viscor_dk_law(viscor_dem_model model) {
+    switch (model) {
+    case VISCOR_LAMMPS_VELOCITY: case VISCOR_LAMMPS_MASS_VELOCITY: return "hertz_linear_damping";
+    case VISCOR_LAMMPS_VISCOELASTIC: return "kuwabara_kono";
+    case VISCOR_LAMMPS_TSUJI: case VISCOR_LIGGGHTS_HERTZ: return "tsuji";
+    }
+    return 0;
+}
+
+/* deck_convention.hpp damping_scale: gamma0 per unit damping number D. */
+static double viscor_dk_damping_scale(viscor_dem_model model, const viscor_dk_contact* c) {
+    const double k = c->stiffness, m = c->effective_mass;
+    switch (model) {
+    case VISCOR_LAMMPS_VELOCITY: return 1 / k;
+    case VISCOR_LAMMPS_MASS_VELOCITY: return m / k;
+    case VISCOR_LAMMPS_VISCOELASTIC: return 2 * m * sqrt(c->effective_radius) / (3 * k);
+    case VISCOR_LAMMPS_TSUJI: return 4 * sqrt(m * k) / (5 * k);
+    case VISCOR_LIGGGHTS_HERTZ: return 4 * sqrt(5.0) * sqrt(m * k) / (5 * k);
+    }
+    return NAN;
+}
+
+/* builtin_conversions.hpp lammps_tsuji_damping: LAMMPS's polynomial eta'(e). */
+static double viscor_dk_tsuji_damping(double e) {
+    double p = 4.8218;
+    p = p * e - 18.022;
+    p = p * e + 27.467;
+    p = p * e - 22.348;
+    p = p * e + 11.087;
+    p = p * e - 4.2783;
+    p = p * e + 1.2728;
+    return p;
+}
+
+/* builtin_conversions.hpp lammps_tsuji_deck_e: bisection to neighbouring doubles. */
+static double viscor_dk_tsuji_deck_e(double damping) {
+    double lo = 0, hi = 1;
+    int i;
+    if (!(damping >= viscor_dk_tsuji_damping(1) && damping <= viscor_dk_tsuji_damping(0))) return NAN;
+    for (i = 0; i < 4 * DBL_MANT_DIG + 1100; ++i) {
+        const double mid = (lo + hi) / 2;
+        if (mid == lo || mid == hi) break;
+        if (viscor_dk_tsuji_damping(mid) >= damping)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    return fabs(viscor_dk_tsuji_damping(hi) - damping) < fabs(viscor_dk_tsuji_damping(lo) - damping) ? hi : lo;
+}
+
+/* builtin_conversions.hpp liggghts_damping_ratio |b(e)| and liggghts_deck_e. */
+static double viscor_dk_liggghts_ratio(double e) {
+    const double l = log(e);
+    return -l / sqrt(l * l + viscor_dk_pi * viscor_dk_pi);
+}
+
+static double viscor_dk_liggghts_deck_e(double b) {
+    if (!(b >= 0 && b < 1)) return NAN;
+    return exp(-viscor_dk_pi * b / sqrt(1 - b * b));
+}
+
+/* deck_convention.hpp damping_number and deck_damping_for. */
+static double viscor_dk_damping_number(viscor_dem_model model, double entry) {
+    if (model == VISCOR_LAMMPS_TSUJI) return viscor_dk_tsuji_damping(entry);
+    if (model == VISCOR_LIGGGHTS_HERTZ) return viscor_dk_liggghts_ratio(entry);
+    return entry;
+}
+
+static double viscor_dk_deck_damping_for(viscor_dem_model model, double damping) {
+    if (model == VISCOR_LAMMPS_TSUJI) return viscor_dk_tsuji_deck_e(damping);
+    if (model == VISCOR_LIGGGHTS_HERTZ) return viscor_dk_liggghts_deck_e(damping);
+    return damping;
+}
+
+static int viscor_dk_valid_impact(viscor_dem_model model, const viscor_dem_impact* in) {
+    return in && (int)model >= 0 && (int)model <= 4 && viscor_dk_finite(in->v0) && in->v0 > 0 &&
+           viscor_dk_finite(in->gravity) && in->gravity >= 0 && viscor_dk_finite(in->force);
+}
+
+/* The contact, its surrogate, m, k and the load felt (gravity drops out of a pair). */
+typedef struct viscor_dk_setup {
+    viscor_dk_contact c;
+    const viscor_surrogate* s;
+    double gravity;
+} viscor_dk_setup;
+
+static viscor_deck_status viscor_dk_set_up(viscor_dem_model model, const viscor_dem_impact* in, viscor_dk_setup* u) {
+    if (!viscor_dk_valid_impact(model, in) || !viscor_dk_make_contact(in, &u->c)) return VISCOR_DECK_INVALID_INPUT;
+    u->s = viscor_surrogate_named(viscor_dk_law(model));
+    if (!u->s) return VISCOR_DECK_NO_SURROGATE;
+    u->gravity = in->pair ? 0.0 : in->gravity;
+    return VISCOR_DECK_OK;
+}
+
+/* The e of a deck damping entry at this impact (dem_calibration.hpp e_for_deck, by the surrogate). */
+static double viscor_dk_e_for_entry(viscor_dem_model model, const viscor_dk_setup* u, const viscor_dem_impact* in,
+                                    double entry) {
+    const double gamma0 = viscor_dk_damping_number(model, entry) * viscor_dk_damping_scale(model, &u->c);
+    return viscor_cor_physical(u->s, u->c.effective_mass, u->c.stiffness, gamma0, in->v0, u->gravity, in->force).e;
+}
+
+static viscor_deck viscor_dk_no_deck(viscor_deck_status status) {
+    viscor_deck d;
+    d.status = status;
+    d.damping = d.damping_number = d.gamma0 = d.youngs_modulus = d.poisson_ratio = NAN;
+    d.wall_youngs_modulus = d.wall_poisson_ratio = d.other_youngs_modulus = d.other_poisson_ratio = NAN;
+    d.cross_youngs_modulus = d.bead_bead_youngs_modulus = d.bead_bead_damping = d.other_other_damping = NAN;
+    d.builtin_e = NAN;
+    return d;
+}
+
+/* The contact's own deck (dem_calibration.hpp dem_deck_for and complete_deck), without
+   the like-bead entries. */
+static viscor_deck viscor_dk_deck(viscor_dem_model model, double e_target, const viscor_dem_impact* in) {
+    viscor_dk_setup u;
+    viscor_deck d = viscor_dk_no_deck(VISCOR_DECK_OK);
+    const viscor_deck_status status = viscor_dk_set_up(model, in, &u);
+    double g;
+    if (status != VISCOR_DECK_OK) return viscor_dk_no_deck(status);
+    if (!(e_target >= 0.01 && e_target < 1)) return viscor_dk_no_deck(VISCOR_DECK_INVALID_INPUT);
+    g = viscor_scaled_g(u.s, u.c.effective_mass, u.c.stiffness, in->v0, u.gravity, in->force);
+    if (!(g >= u.s->g_min && g <= u.s->g_max)) return viscor_dk_no_deck(VISCOR_DECK_UNREACHABLE);
+    d.gamma0 = viscor_gamma_for(u.s, e_target, g) /
+               viscor_damping_scale(u.s, u.c.effective_mass, u.c.stiffness, in->v0);
+    if (d.gamma0 != d.gamma0) return viscor_dk_no_deck(VISCOR_DECK_UNREACHABLE);
+    d.damping_number = d.gamma0 / viscor_dk_damping_scale(model, &u.c);
+    d.damping = viscor_dk_deck_damping_for(model, d.damping_number);
+    if (d.damping != d.damping) return viscor_dk_no_deck(VISCOR_DECK_UNREACHABLE);
+    /* deck_convention.hpp deck_youngs_modulus; LAMMPS's wall reads only its own entry */
+    if (!in->pair && model != VISCOR_LIGGGHTS_HERTZ)
+        d.youngs_modulus = in->wall_material ? 2 * (1 - in->bead.poisson_ratio) * u.c.effective_modulus
+                                             : 2 * in->bead.youngs_modulus / (1 + in->bead.poisson_ratio);
+    else
+        d.youngs_modulus = in->bead.youngs_modulus;
+    d.poisson_ratio = in->bead.poisson_ratio;
+    if (model == VISCOR_LIGGGHTS_HERTZ && !in->pair) { /* wall_deck_modulus: the wall type's own */
+        d.wall_youngs_modulus = in->wall_material ? in->wall_youngs_modulus : 1e30;
+        if (in->wall_material) d.wall_poisson_ratio = in->wall_poisson_ratio;
+    }
+    if (in->pair && in->other_material) {
+        d.other_youngs_modulus = in->other.youngs_modulus;
+        d.other_poisson_ratio = in->other.poisson_ratio;
+        if (model != VISCOR_LIGGGHTS_HERTZ) /* lammps_cross_modulus */
+            d.cross_youngs_modulus = 2 * (1 - d.poisson_ratio * d.poisson_ratio) * u.c.effective_modulus;
+    }
+    if (model == VISCOR_LAMMPS_TSUJI || model == VISCOR_LIGGGHTS_HERTZ)
+        d.builtin_e = viscor_dk_e_for_entry(model, &u, in, e_target);
+    return d;
+}
+
+/* deck_entries.hpp like_beads_impact: two beads like `bead`, the same speed, no load. */
+static viscor_dem_impact viscor_dk_like_beads(const viscor_dem_impact* in, const viscor_bead* bead) {
+    viscor_dem_impact pair = *in;
+    pair.bead = *bead;
+    pair.pair = 1, pair.wall_material = 0, pair.other_material = 0;
+    pair.gravity = 0, pair.force = 0;
+    return pair;
+}
+
+viscor_deck viscor_dem_deck(viscor_dem_model model, double e_target, const viscor_dem_impact* impact) {
+    viscor_deck d = viscor_dk_deck(model, e_target, impact);
+    if (d.status != VISCOR_DECK_OK) return d;
+    if (!impact->pair || impact->other_material) { /* deck_entries.hpp: the like-bead entries read apart */
+        const viscor_dem_impact like = viscor_dk_like_beads(impact, &impact->bead);
+        const viscor_deck b = viscor_dk_deck(model, e_target, &like);
+        if (b.status != VISCOR_DECK_OK) return viscor_dk_no_deck(b.status);
+        if (!impact->pair) d.bead_bead_youngs_modulus = b.youngs_modulus;
+        d.bead_bead_damping = b.damping;
+        if (impact->pair) {
+            const viscor_dem_impact other = viscor_dk_like_beads(impact, &impact->other);
+            const viscor_deck o = viscor_dk_deck(model, e_target, &other);
+            if (o.status != VISCOR_DECK_OK) return viscor_dk_no_deck(o.status);
+            d.other_other_damping = o.damping;
+        }
+    }
+    return d;
+}
+
+double viscor_dem_damping_entry(viscor_dem_model model, double e_target, const viscor_dem_impact* impact) {
+    return viscor_dk_deck(model, e_target, impact).damping;
+}
+
+double viscor_dem_e_for_entry(viscor_dem_model model, double deck_damping, const viscor_dem_impact* impact) {
+    viscor_dk_setup u;
+    if (viscor_dk_set_up(model, impact, &u) != VISCOR_DECK_OK || !viscor_dk_finite(deck_damping)) return NAN;
+    if (model == VISCOR_LAMMPS_TSUJI ? !(deck_damping >= 0 && deck_damping <= 1)
+        : model == VISCOR_LIGGGHTS_HERTZ ? !(deck_damping > 0 && deck_damping <= 1)
+        : !(deck_damping >= 0))
+        return NAN;
+    return viscor_dk_e_for_entry(model, &u, impact, deck_damping);
+}
+)";
+
+}  // namespace
+
+std::string dem_entries_c_declarations() { return declarations; }
+std::string dem_entries_c_definitions() { return definitions; }
+
+}  // namespace viscor::jobs
