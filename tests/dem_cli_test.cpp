@@ -181,7 +181,20 @@ TEST(CliDem, BadInputExitsTwoNamingTheValue) {
                        // needs less damping than the tsuji polynomial gives at e = 1 (0.0003)
                        bad{"dem lammps --damping tsuji --target-e 0.9999" + steel + " --v0 1 --gravity 0", "target_e = 9.999"},
                        // a pulling force: the bead cannot lose enough energy
-                       bad{"dem lammps --damping velocity --target-e 0.01" + steel + " --v0 0.01 --gravity 9.81 --force -1", "target_e"}}) {
+                       bad{"dem lammps --damping velocity --target-e 0.01" + steel + " --v0 0.01 --gravity 9.81 --force -1", "target_e"},
+                       // a time step calibrates a forward deck by the solve
+                       bad{"dem lammps --damping tsuji --target-e 0.8 --timestep T/0" + steel + " --v0 0.5 --gravity 9.81",
+                           "--timestep"},
+                       bad{"dem lammps --damping tsuji --deck-damping 0.5 --timestep T/20" + steel + " --v0 0.5 --gravity 9.81",
+                           "--timestep"},
+                       bad{"dem lammps --damping tsuji --target-e 0.8 --timestep T/20 --method surrogate" + steel +
+                               " --v0 0.5 --gravity 9.81",
+                           "--method"},
+                       bad{"dem yade --damping viscoelastic --k 1e6 --radius 1e-3 --density 2500 --target-e 0.8 "
+                           "--timestep T/20 --v0 0.5 --gravity 9.81",
+                           "--timestep"},
+                       bad{"dem lammps --damping tsuji --target-e 0.8 --method guess" + steel + " --v0 0.5 --gravity 9.81",
+                           "'guess'"}}) {
     SCOPED_TRACE(b.args);
     const std::string out_file = ::testing::TempDir() + "viscor_dem_bad.json";
     std::filesystem::remove(out_file);

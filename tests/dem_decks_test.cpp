@@ -3,6 +3,8 @@
 // - examples/dem/yade_drop.py imports viscor's Python module (the build tree's, next
 //   to the CLI) and takes its betan and deck modulus from viscor.dem() while yade
 //   reads it; it prints the rebound e at viscor's recommended step and at half of it;
+// - examples/dem/lammps_drop.in has LAMMPS's python command import viscor, call
+//   viscor.dem("lammps", damping="tsuji", ..., variables=FILE) and include the block;
 // - examples/dem/liggghts_drop.in includes the variable block of
 //   `viscor dem liggghts --variables FILE` and prints the rebound e; run at the
 //   recommended step and with -var dt_divisor 2.
@@ -67,6 +69,14 @@ void expect_rebound_converges(const char* what, double e, double e_half) {
               e_half - target_e);
 }
 
+/// The file's content ("" if it cannot be read).
+std::string slurp(const fs::path& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
 TEST(DemDecks, YadeScriptAsksViscor) {
   if (std::string(VISCOR_CLI_PATH).empty()) GTEST_SKIP() << "viscor CLI not built";
   const auto yade = dem_drop::find_program("yade");
@@ -84,6 +94,29 @@ TEST(DemDecks, YadeScriptAsksViscor) {
   const std::vector<double> e = printed_rebounds(ran.out);
   ASSERT_EQ(e.size(), 2u) << tail(ran.out);
   expect_rebound_converges("yade, betan from viscor.dem", e[0], e[1]);
+}
+
+TEST(DemDecks, LammpsDeckImportsViscor) {
+  if (std::string(VISCOR_CLI_PATH).empty()) GTEST_SKIP() << "viscor CLI not built";
+  const auto lmp = dem_drop::find_program("lmp");
+  if (!lmp) VISCOR_SKIP_OR_FAIL_MISSING("lmp is not installed (tools/install-deps.sh installs lammps)");
+  const fs::path python = fs::path(VISCOR_CLI_PATH).parent_path() / "python";
+  if (!fs::exists(python / "viscor" / "__init__.py"))
+    VISCOR_SKIP_OR_FAIL_MISSING("viscor's Python module is not built in " << python.string());
+  scratch_dir dir{"viscor_dem_decks"};
+  ASSERT_FALSE(dir.path.empty());
+  const std::string deck = "PYTHONPATH='" + python.string() + "' '" + *lmp +
+                           "' -log none -in '" VISCOR_SOURCE_DIR "/examples/dem/lammps_drop.in'";
+  const auto ran = run_in(dir.path, deck);
+  const auto ran_half = run_in(dir.path, deck + " -var dt_divisor 2");
+  ASSERT_EQ(ran.status, 0) << tail(ran.out);
+  ASSERT_EQ(ran_half.status, 0) << tail(ran_half.out);
+  const std::vector<double> e = printed_rebounds(ran.out), e_half = printed_rebounds(ran_half.out);
+  ASSERT_EQ(e.size(), 1u) << tail(ran.out);
+  ASSERT_EQ(e_half.size(), 1u) << tail(ran_half.out);
+  // the block the python function had viscor write is viscor's, for damping tsuji
+  EXPECT_NE(slurp(dir.path / "viscor_variables.in").find("lammps damping tsuji"), std::string::npos);
+  expect_rebound_converges("lammps tsuji, import viscor in the deck", e[0], e_half[0]);
 }
 
 TEST(DemDecks, LiggghtsDeckIncludesViscorVariables) {
@@ -107,13 +140,6 @@ TEST(DemDecks, LiggghtsDeckIncludesViscorVariables) {
   expect_rebound_converges("liggghts, viscor's variable block", e[0], e_half[0]);
 }
 
-/// The file's content ("" if it cannot be read).
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 // --variables writes only over a block viscor wrote, never for YADE (a Python script asks
 // viscor itself) or the reverse mode (exit 2, nothing written); the block holds the entries

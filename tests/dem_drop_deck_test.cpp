@@ -12,9 +12,12 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <regex>
+#include <sstream>
 #include <string>
 
 namespace {
@@ -91,6 +94,128 @@ TEST(DemDropDeck, LiggghtsHertzOnSteelPlateRunsAsWritten) {
 }
 TEST(DemDropDeck, YadeMindlinOnSteelPlateRunsAsWritten) {
   expect_deck_rebounds_at_target("yade", "yade --damping mindlin", "-n -x", steel_plate);
+}
+
+/// Replaces every occurrence of `from` in the file at `path` by `to`; how many.
+std::size_t replace_in_file(const std::string& path, const std::string& from, const std::string& to) {
+  std::string text;
+  {
+    std::ifstream in(path);
+    std::stringstream all;
+    all << in.rdbuf();
+    text = all.str();
+  }
+  std::size_t edits = 0;
+  for (std::size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
+    text.replace(at, from.size(), to), ++edits;
+  std::ofstream(path) << text;
+  return edits;
+}
+
+/// A deck whose damping entry was edited by hand, for a before/after comparison: the
+/// drop deck of `model_args` with every occurrence of its calibrated damping entry
+/// replaced by `edited`, run as written, must still report its e, and that e must be the
+/// one viscor predicts for the edited entry (`expected_field` of `viscor dem --json`:
+/// builtin_e when the edit writes the target itself into the code's own e input).
+void expect_edited_deck_reports(const std::string& program_name, const std::string& model_args,
+                                const std::string& run_flags, const std::string& edited,
+                                const std::string& expected_command, const std::string& expected_field) {
+  SCOPED_TRACE(model_args + ", damping entry edited to " + edited);
+  if (std::string(VISCOR_CLI_PATH).empty()) GTEST_SKIP() << "viscor CLI not built";
+  const auto program = dem_drop::find_program(program_name);
+  if (!program) VISCOR_SKIP_OR_FAIL_MISSING(program_name << " is not installed (tools/install-deps.sh installs it)");
+  scratch_dir dir{"viscor_drop_deck"};
+  ASSERT_FALSE(dir.path.empty());
+  const std::string deck_name = program_name == "yade" ? "drop.py" : "drop.in";
+  const std::string deck = (dir.path / deck_name).string();
+  const auto written = run_cli("dem " + model_args + glass + " --drop-deck " + deck + " --json");
+  ASSERT_EQ(written.status, 0) << written.err;
+  const std::string calibrated = nlohmann::json::parse(written.out)["deck"]["damping"];
+  const std::size_t edits = replace_in_file(deck, calibrated, edited);
+  ASSERT_GT(edits, 0u) << "the deck does not hold its damping entry " << calibrated;
+  const auto predicted = run_cli(expected_command + glass.substr(0, glass.find(" --target-e")) +
+                                 " --v0 0.5 --gravity 9.81 --json");
+  ASSERT_EQ(predicted.status, 0) << predicted.err;
+  const nlohmann::json p = nlohmann::json::parse(predicted.out);
+  const double expected = expected_field == "builtin_e" ? std::stod(p["builtin_e"].get<std::string>())
+                                                        : std::stod(p["table"][1]["e"].get<std::string>());
+  const auto ran = run_in(dir.path, "'" + *program + "' " + run_flags + " " + deck_name);
+  ASSERT_EQ(ran.status, 0) << ran.out;
+  const double e = printed_rebound_e(ran.out);
+  EXPECT_NEAR(e, expected, deck_tolerance) << ran.out.substr(ran.out.size() > 3000 ? ran.out.size() - 3000 : 0);
+  std::printf("[edited deck] %s, damping %s -> %s: rebound e = %.9f, viscor predicts %.9f\n", model_args.c_str(),
+              calibrated.c_str(), edited.c_str(), e, expected);
+}
+
+// Before/after: the code's own conversion (the measured e written into its e input) in
+// the deck viscor wrote; the deck reports the e viscor predicts for it (builtin_e).
+TEST(DemDropDeck, LammpsTsujiDeckWithTheBuiltinEntryReportsItsE) {
+  expect_edited_deck_reports("lmp", "lammps --damping tsuji", "-in", "0.8",
+                             "dem lammps --damping tsuji --target-e 0.8", "builtin_e");
+}
+TEST(DemDropDeck, LiggghtsHertzDeckWithTheBuiltinEntryReportsItsE) {
+  expect_edited_deck_reports("liggghts", "liggghts --damping hertz", "-in", "0.8",
+                             "dem liggghts --damping hertz --target-e 0.8", "builtin_e");
+}
+// About four times the damping: a shorter rebound and a contact time other than the calibrated one.
+TEST(DemDropDeck, YadeMindlinDeckWithEditedDampingReportsItsE) {
+  expect_edited_deck_reports("yade", "yade --damping mindlin", "-n -x", "0.3",
+                             "dem yade --damping mindlin --deck-damping 0.3 --speeds 0.5", "table");
+}
+
+
+/// The e at the code's time step (dem/stepped_drop.hpp): `viscor dem --timestep T/N
+/// --drop-deck` writes the deck at that step with entries calibrated for it, and the real
+/// program rebounds within 1e-5 of the target at T/20, T/50 and T/100; the same deck with
+/// the continuous calibration's entry drifts by what viscor says it does (within 1e-5),
+/// and by more than the step-aware entry misses. The truth is the target and the
+/// program's own rebound; viscor's stepped drop is what is checked.
+void expect_step_aware_decks_hit_target(const std::string& program_name, const std::string& model_args,
+                                        const std::string& run_flags) {
+  SCOPED_TRACE(model_args);
+  if (std::string(VISCOR_CLI_PATH).empty()) GTEST_SKIP() << "viscor CLI not built";
+  const auto program = dem_drop::find_program(program_name);
+  if (!program) VISCOR_SKIP_OR_FAIL_MISSING(program_name << " is not installed (tools/install-deps.sh installs it)");
+  for (const int n : {20, 50, 100}) {
+    scratch_dir dir{"viscor_drop_deck"};
+    ASSERT_FALSE(dir.path.empty());
+    const std::string deck_name = program_name == "yade" ? "drop.py" : "drop.in";
+    const std::string deck = (dir.path / deck_name).string();
+    const auto written =
+        run_cli("dem " + model_args + glass + " --timestep T/" + std::to_string(n) + " --drop-deck " + deck + " --json");
+    ASSERT_EQ(written.status, 0) << written.err;
+    const nlohmann::json j = nlohmann::json::parse(written.out);
+    const auto ran = run_in(dir.path, "'" + *program + "' " + run_flags + " " + deck_name);
+    ASSERT_EQ(ran.status, 0) << ran.out;
+    const double e = printed_rebound_e(ran.out);
+    EXPECT_NEAR(e, target_e, 1e-5) << "T/" << n << ": " << ran.out.substr(ran.out.size() > 2000 ? ran.out.size() - 2000 : 0);
+    // the same deck with the entry calibrated for the continuous impact
+    const std::string stepped_entry = j["deck"]["damping"], continuous_entry = j["continuous_deck_damping"];
+    ASSERT_GT(replace_in_file(deck, stepped_entry, continuous_entry), 0u) << stepped_entry;
+    const auto continuous = run_in(dir.path, "'" + *program + "' " + run_flags + " " + deck_name);
+    ASSERT_EQ(continuous.status, 0) << continuous.out;
+    const double drift = printed_rebound_e(continuous.out) - target_e;
+    const double predicted = std::stod(j["continuous_timestep_e"].get<std::string>()) - target_e;
+    EXPECT_NEAR(drift, predicted, 1e-5) << "T/" << n << ": the continuous entry's drift, viscor's stepped drop";
+    EXPECT_GT(std::abs(drift), std::abs(e - target_e)) << "T/" << n;
+    std::printf("[time step] %s at T/%d: step-aware entry %s: e = %.9f (miss %+.1e); continuous entry %s: "
+                "e = %.9f (drift %+.2e, viscor's stepped drop %+.2e)\n",
+                model_args.c_str(), n, stepped_entry.c_str(), e, e - target_e, continuous_entry.c_str(),
+                target_e + drift, drift, predicted);
+  }
+}
+
+TEST(DemDropDeck, LammpsTsujiStepAwareDecksHitTheTarget) {
+  expect_step_aware_decks_hit_target("lmp", "lammps --damping tsuji", "-in");
+}
+TEST(DemDropDeck, LammpsVelocityStepAwareDecksHitTheTarget) {  // the damping force already acts at zero overlap
+  expect_step_aware_decks_hit_target("lmp", "lammps --damping velocity", "-in");
+}
+TEST(DemDropDeck, LiggghtsHertzStepAwareDecksHitTheTarget) {
+  expect_step_aware_decks_hit_target("liggghts", "liggghts --damping hertz", "-in");
+}
+TEST(DemDropDeck, YadeMindlinStepAwareDecksHitTheTarget) {
+  expect_step_aware_decks_hit_target("yade", "yade --damping mindlin", "-n -x");
 }
 
 /// `viscor dem --json` output for the glass bead.

@@ -133,7 +133,7 @@ py::object dem(const text_fields& fields, int digits, bool strict) {
       {"wall_youngs_modulus", &q.wall_youngs_modulus}, {"wall_poisson_ratio", &q.wall_poisson_ratio},
       {"other_youngs_modulus", &q.other_youngs_modulus}, {"other_poisson_ratio", &q.other_poisson_ratio},
       {"other_radius", &q.other_radius}, {"other_density", &q.other_density},
-      {"variables", &q.variables_path}, {"method", &q.method}};
+      {"variables", &q.variables_path}, {"method", &q.method}, {"timestep", &q.timestep}};
   for (const auto& [name, value] : fields) {
     const auto slot = slots.find(name);
     if (slot == slots.end()) throw invalid_parameter("dem: unknown input '" + name + "'");

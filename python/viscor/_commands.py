@@ -131,7 +131,7 @@ def scale(law=None, *, alpha=None, beta=None, digits=15, gamma=None, g=None, str
 _DEM_INPUTS = ("damping", "contact", "youngs_modulus", "poisson_ratio", "k", "radius", "density", "target_e",
                "deck_damping", "deck_en", "v0", "gravity", "force", "speeds", "drop_deck", "wall_youngs_modulus",
                "wall_poisson_ratio", "other_youngs_modulus", "other_poisson_ratio", "other_radius", "other_density",
-               "variables", "method")
+               "variables", "method", "timestep")
 
 
 def dem(code, *, digits=15, strict=False, **options):
@@ -143,7 +143,8 @@ def dem(code, *, digits=15, strict=False, **options):
     with another bead: other_youngs_modulus, other_poisson_ratio, other_radius,
     other_density; variables (a path to write the LAMMPS/LIGGGHTS ``variable`` block
     of ``viscor dem --variables`` to); method 'solve' (default) or 'surrogate' (the
-    committed surrogate's inverse in double: the C export's entries)."""
+    committed surrogate's inverse in double: the C export's entries); timestep (seconds,
+    or 'T/N' or 'contact/N'): entries for the e the code's own update gives at that step."""
     if not isinstance(code, str):
         raise TypeError(f"dem() needs the DEM code as a string ('lammps', 'liggghts' or 'yade'), got {code!r}")
     fields = {"code": code}
@@ -152,7 +153,7 @@ def dem(code, *, digits=15, strict=False, **options):
             raise TypeError(f"dem() got an unexpected keyword argument {key!r}")
         if value is None:
             continue
-        if key in ("damping", "contact", "method"):
+        if key in ("damping", "contact", "method") or (key == "timestep" and isinstance(value, str)):
             fields[key] = str(value)
         elif key in ("drop_deck", "variables"):
             fields[key] = os.fspath(value)

@@ -61,6 +61,9 @@ void setup(CLI::App& app) {
                  "lammps, liggghts: also write the entries, the impact and the time step as a `variable` block "
                  "(variable viscor_NAME string VALUE) for a deck's `include`; never replaces a file viscor did not write");
   app.add_option("--digits", q.digits, "working precision in decimal digits")->capture_default_str();
+  app.add_option("--timestep", q.timestep,
+                 "calibrate for the e the code's own update gives at this time step: seconds, T/N (T the impact's "
+                 "time scale) or contact/N (docs/dem.md)");
   app.add_option("--method", q.method,
                  "solve (the calibration by the Taylor solve) or surrogate (the committed surrogate's inverse in "
                  "double: the C export's entries, docs/dem.md)")

@@ -68,6 +68,19 @@ class SameAsTheCli(unittest.TestCase):
         self.assertEqual(mine["method"], "surrogate")
         self.assertIn("error_bound", mine)
 
+    def test_dem_at_a_time_step(self):
+        # Entries for the e the code's own update gives at T/50 (docs/dem.md): the CLI's, and at that step.
+        options = dict(damping="tsuji", youngs_modulus="3e9", poisson_ratio="0.35", radius="1e-3", density="1200",
+                       target_e="0.5", v0="0.01", gravity="9.81", timestep="T/50")
+        r = viscor.dem("lammps", **options)
+        cli = cli_json("dem", "lammps", *[w for k, v in options.items() for w in ("--" + k.replace("_", "-"), v)])
+        cli.pop("seconds", None)
+        mine = r.to_dict()
+        mine.pop("seconds", None)
+        self.assertEqual(mine, cli)
+        self.assertEqual(mine["timestep"], "T/50")
+        self.assertNotEqual(mine["deck"]["damping"], mine["continuous_deck_damping"])
+
 
 def without_timings(value):
     """A JSON value with every "seconds" field (a timing, at any depth) removed."""

@@ -44,6 +44,9 @@ struct dem_request {
   /// Forward: solve (the calibration by the Taylor solve, at `digits`) or surrogate (the committed
   /// surrogate's inverse in double, as the C export computes each code's entries: docs/dem.md).
   std::string method = "solve";
+  /// Forward: calibrate for the e the code's own update gives at this time step (dem/stepped_drop.hpp):
+  /// seconds, "T/N" (T the impact's time scale) or "contact/N"; "": the continuous impact.
+  std::string timestep;
   bool strict = false;           ///< refuse, not only warn about, implausible inputs
 
   /// The wall's and the other bead's inputs, under their field names.
@@ -81,6 +84,14 @@ struct dem_forward {
   std::string snippet;  ///< the input lines, ready to paste
   working_number contact_time, time_step;  ///< s: how long the contact lasts, the recommended step
   working_number timing_time_scale;        ///< s: the drop's time scale T (time_step = T / steps_per_time_scale)
+  /// With a time step: the step, and what the entries calibrated for the continuous impact give at it.
+  struct at_time_step {
+    working_number time_step;   ///< s, as asked for
+    working_number e;           ///< the stepped drop's e with these entries
+    std::string continuous_damping;  ///< the continuous calibration's damping entry
+    working_number continuous_e;     ///< the stepped drop's e with it (its drift from the target)
+  };
+  std::optional<at_time_step> stepped;
   long steps_per_time_scale = 0, steps_per_contact = 0;
   std::string drop_deck_path, variables_path;  ///< the files written ("" when not asked for)
 };

@@ -85,6 +85,12 @@ inline void add_forward_json(jobs::json& j, const jobs::dem_result& r, const job
   j["snippet"] = f.snippet;
   j[field::contact_time_s] = number(f.contact_time);
   j["time_step_s"] = number(f.time_step);
+  if (f.stepped) {
+    j["timestep"] = r.inputs.timestep;
+    j["timestep_e"] = number(f.stepped->e);
+    j["continuous_deck_damping"] = f.stepped->continuous_damping;
+    j["continuous_timestep_e"] = number(f.stepped->continuous_e);
+  }
   if (!f.drop_deck_path.empty()) j["drop_deck"] = f.drop_deck_path;
   if (!f.variables_path.empty()) j["variables"] = f.variables_path;
 }
@@ -143,6 +149,10 @@ inline void write_forward_text(std::ostream& text, const jobs::dem_result& r, co
   text << "time step   the contact lasts " << f.contact_time.decimal(6) << " s; dt = T/" << f.steps_per_time_scale
        << " = " << f.time_step.decimal(6) << " s (T = " << f.timing_time_scale.decimal(6) << " s, about "
        << f.steps_per_contact << " steps per contact)\n";
+  if (f.stepped)
+    text << "            calibrated for that step as " << r.model.code_name << " steps the drop: e = "
+         << f.stepped->e.decimal(10) << "; the continuous entry " << f.stepped->continuous_damping << " gives "
+         << f.stepped->continuous_e.decimal(10) << " there\n";
   text << "snippet\n" << f.snippet;
   if (!f.drop_deck_path.empty())
     text << "drop deck   wrote " << f.drop_deck_path << " (run: " << drop_run_command(r.model, f.drop_deck_path) << ")\n";
