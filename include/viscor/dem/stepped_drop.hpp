@@ -41,47 +41,65 @@ struct stepped_drop {
 /// How many contact times of the continuous impact a stepped drop may take (as the decks allow).
 inline constexpr long stepped_drop_budget = 50;
 
-/// The drop of the impact's bead at the damping gamma0, stepped with dt by the model's code.
+namespace detail {
+
+/// d(overlap rate)/dt of the code's contact: the load minus F/m, F = k x^alpha +
+/// gamma0 k beta x^(beta-1) u at overlap x and overlap rate u (u > 0: into the wall).
 template <class Real>
-stepped_drop<Real> step_drop(const dem_model& model, const physical_parameters<Real>& p, const Real& dt,
-                             long max_steps) {
-  using std::pow;
-  using std::sqrt;
-  const contact_law law = law_of(model);
-  const Real alpha = law.alpha.value<Real>(), beta = law.beta.value<Real>();
-  const Real load = p.gravity + p.force / p.m;  // du/dt without contact (u > 0: into the wall)
-  // the acceleration of the overlap x at overlap rate u: load - F/m, F = k x^alpha + gamma0 k beta x^(beta-1) u
+struct overlap_acceleration {
+  const dem_model& model;
+  const physical_parameters<Real>& p;
+  Real alpha, beta, load;
   // LAMMPS's wall/gran counts a contact from zero overlap on (it skips only rsq > R^2), which
   // matters where the damping force does not vanish there (beta = 1): at the set-up the bead
   // touches the wall and already feels D v0. YADE's Law2 drops a contact without overlap.
-  const bool touching_counts = model.code != dem_code::yade;
-  auto acceleration = [&](const Real& x, const Real& u) {
+  bool touching_counts;
+
+  overlap_acceleration(const dem_model& m, const physical_parameters<Real>& in)
+      : model(m), p(in), alpha(law_of(m).alpha.template value<Real>()), beta(law_of(m).beta.template value<Real>()),
+        load(in.gravity + in.force / in.m), touching_counts(m.code != dem_code::yade) {}
+
+  Real operator()(const Real& x, const Real& u) const {
+    using std::pow;
     if (!(x > 0) && !(touching_counts && x == 0)) return load;
     Real force = p.k * pow(x, alpha) + p.gamma0 * p.k * beta * pow(x, beta - 1) * u;
     if (model.clamped && force < 0) force = 0;
     return Real(load - force / p.m);
-  };
+  }
+};
+
+/// YADE's leapfrog from zero overlap at v0; e from the parabola through the last three positions.
+template <class Real>
+stepped_drop<Real> leapfrog_drop(const overlap_acceleration<Real>& acceleration, const Real& v0, const Real& dt,
+                                 long max_steps) {
+  using std::sqrt;
   stepped_drop<Real> out;
-  Real x = 0, u = p.v0;
-  if (model.code == dem_code::yade) {  // leapfrog; e from the parabola through the last three positions
-    Real x0 = 0, x1 = 0;
-    for (long n = 0; n < max_steps; ++n) {
-      u += dt * acceleration(x, u);
-      x0 = x1, x1 = x;
-      x += dt * u;
-      if (x > 0) {
-        ++out.contact_steps;
-        continue;
-      }
-      if (n < 2 || !(x1 > 0)) continue;  // still at the start, or out of contact before (a free flight)
-      const Real a = (x - 2 * x1 + x0) / (dt * dt), b = (x - x0) / (2 * dt);
-      out.rebound = true;
-      out.e = sqrt(b * b - 2 * a * x1) / p.v0;
-      return out;
+  Real x = 0, u = v0, x0 = 0, x1 = 0;
+  for (long n = 0; n < max_steps; ++n) {
+    u += dt * acceleration(x, u);
+    x0 = x1, x1 = x;
+    x += dt * u;
+    if (x > 0) {
+      ++out.contact_steps;
+      continue;
     }
+    if (n < 2 || !(x1 > 0)) continue;  // still at the start, or out of contact before (a free flight)
+    const Real a = (x - 2 * x1 + x0) / (dt * dt), b = (x - x0) / (2 * dt);
+    out.rebound = true;
+    out.e = sqrt(b * b - 2 * a * x1) / v0;
     return out;
   }
-  // velocity Verlet; e from v = v_e + A x^beta through the last two in-contact steps
+  return out;
+}
+
+/// LAMMPS's and LIGGGHTS's velocity Verlet from zero overlap at v0; e from v = v_e + A x^beta
+/// through the last two in-contact steps, as the drop deck fits it.
+template <class Real>
+stepped_drop<Real> verlet_drop(const overlap_acceleration<Real>& acceleration, const Real& v0, const Real& dt,
+                               long max_steps) {
+  using std::pow;
+  stepped_drop<Real> out;
+  Real x = 0, u = v0;
   Real a = acceleration(x, u);  // the forces of the set-up, at zero overlap
   Real x1 = 0, u1 = u, x2 = 0, u2 = u;
   for (long n = 0; n < max_steps; ++n) {
@@ -95,13 +113,24 @@ stepped_drop<Real> step_drop(const dem_model& model, const physical_parameters<R
       continue;
     }
     if (!(u < 0) || !(x1 > 0) || !(x2 > 0)) continue;  // not on the way out of a contact of two steps or more
-    const Real xa = pow(x2, beta), xb = pow(x1, beta);
+    const Real xa = pow(x2, acceleration.beta), xb = pow(x1, acceleration.beta);
     out.rebound = true;
     // the deck's fit in its velocities v = -u: e = (v1 - (v2 - v1)/(xa - xb) xb)/v0
-    out.e = (-u1 - (u1 - u2) / (xa - xb) * xb) / p.v0;
+    out.e = (-u1 - (u1 - u2) / (xa - xb) * xb) / v0;
     return out;
   }
   return out;
+}
+
+}  // namespace detail
+
+/// The drop of the impact's bead at the damping p.gamma0, stepped with dt by the model's code.
+template <class Real>
+stepped_drop<Real> step_drop(const dem_model& model, const physical_parameters<Real>& p, const Real& dt,
+                             long max_steps) {
+  const detail::overlap_acceleration<Real> acceleration(model, p);
+  return model.code == dem_code::yade ? detail::leapfrog_drop(acceleration, p.v0, dt, max_steps)
+                                      : detail::verlet_drop(acceleration, p.v0, dt, max_steps);
 }
 
 /// The time step of a request: a number of seconds, "T/N" (T the impact's time scale of
