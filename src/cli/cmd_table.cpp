@@ -38,12 +38,16 @@ struct run_options {
     app.add_flag("--quiet", run.quiet, "no progress output");
   }
 
+  void check_threads() const {
+    if (run.threads < 1 || run.threads > 4096)
+      throw invalid_parameter("--threads must be from 1 to 4096, got " + std::to_string(run.threads));
+  }
+
   /// The estimate of the run (jobs/table_estimate.hpp): nothing is computed or written.
   void estimate() const {
     if (spec_path.empty()) throw invalid_parameter("viscor table --estimate needs a spec file: viscor table SPEC.json --estimate");
     if (run.resume) throw invalid_parameter("--estimate computes nothing: give it without --resume");
-    if (run.threads < 1 || run.threads > 4096)
-      throw invalid_parameter("--threads must be from 1 to 4096, got " + std::to_string(run.threads));
+    check_threads();
     const shard part = shard_text.empty() ? shard{} : shard::parse(shard_text);
     std::cout << render::table_estimate_text(estimate_cor_table(read_spec_json(spec_path), part, run.threads));
   }
@@ -52,9 +56,8 @@ struct run_options {
   std::pair<table_spec, table_run_options> read(const std::string& command) const {
     if (spec_path.empty()) throw invalid_parameter(command + " needs a spec file: " + command + " SPEC.json -o OUT.csv");
     if (run.output.empty()) throw invalid_parameter(command + " needs an output file: -o OUT.csv");
+    check_threads();
     table_run_options r = run;
-    if (r.threads < 1 || r.threads > 4096)
-      throw invalid_parameter("--threads must be from 1 to 4096, got " + std::to_string(r.threads));
     r.part = shard_text.empty() ? shard{} : shard::parse(shard_text);
     r.spec_file = spec_path;
     r.handle_signals = true;
