@@ -187,9 +187,6 @@ TEST(CliDem, BadInputExitsTwoNamingTheValue) {
                            "--timestep"},
                        bad{"dem lammps --damping tsuji --deck-damping 0.5 --timestep T/20" + steel + " --v0 0.5 --gravity 9.81",
                            "--timestep"},
-                       bad{"dem lammps --damping tsuji --target-e 0.8 --timestep T/20 --method surrogate" + steel +
-                               " --v0 0.5 --gravity 9.81",
-                           "--method"},
                        bad{"dem yade --damping viscoelastic --k 1e6 --radius 1e-3 --density 2500 --target-e 0.8 "
                            "--timestep T/20 --v0 0.5 --gravity 9.81",
                            "--timestep"},

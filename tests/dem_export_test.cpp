@@ -5,6 +5,7 @@
 // --method surrogate` bit for bit (its deck strings read back), the same refusals, and
 // the built-in conversions' e. Independently of the surrogate, the exact Taylor solve of
 // each code's force with the exported entry lands on the target within the stated bound.
+#include <viscor/dem/stepped_drop.hpp>
 #include <viscor/dem/surrogate_deck.hpp>
 #include <viscor/jobs/dem_job.hpp>
 #include <viscor/jobs/surrogate_export.hpp>
@@ -114,11 +115,18 @@ struct library_deck {
   viscor::dem::deck_strings strings;
 };
 
-library_deck library(const viscor::dem::dem_model& model, const drawn& d, const viscor::surrogate::cor_surrogate& s) {
+library_deck library(const viscor::dem::dem_model& model, const drawn& d, const viscor::surrogate::cor_surrogate& s,
+                     double dt = 0) {
+  using viscor::dem::dem_impact;
   library_deck out;
+  // as viscor dem --method surrogate [--timestep dt] makes its decks
+  auto deck = [&](const viscor::dem::dem_model& m, const dem_impact<double>& i, const double& e) {
+    const viscor::dem::dem_deck<double> continuous = viscor::dem::dem_deck_by_surrogate(m, i, e, s);
+    return dt > 0 ? viscor::dem::dem_deck_at_time_step(m, i, e, dt, continuous) : continuous;
+  };
   try {
-    out.deck = viscor::dem::dem_deck_by_surrogate(model, d.impact, d.target, s);
-    out.strings = viscor::dem::deck_entries_by_surrogate(model, d.impact, out.deck, d.target, s);
+    out.deck = deck(model, d.impact, d.target);
+    out.strings = viscor::dem::deck_entries_for(model, d.impact, out.deck, d.target, deck);
   } catch (const viscor::unreachable_target&) {
     out.status = 2;
   } catch (const viscor::invalid_parameter&) {
@@ -184,67 +192,111 @@ class DemExport : public ::testing::Test {
   static inline bool built_ = false;
 };
 
+// Compares the C decks (driver requests `kind`, with dt > 0 for the stepped ones) with the
+// library's on `impacts`, every field bit for bit; the counts of decks and built-in e.
+struct compared {
+  std::size_t decks = 0, builtin = 0, mismatches = 0;
+};
+
+compared compare_decks(const exported_model& e, const std::vector<drawn>& impacts, const std::vector<double>& dts,
+                       const std::vector<std::string>& answers, const std::vector<std::string>& requests,
+                       const viscor::surrogate::cor_surrogate& s) {
+  const viscor::dem::dem_model& model = viscor::dem::find_dem_model(e.code, e.damping);
+  compared out;
+  for (std::size_t n = 0; n < impacts.size(); ++n) {
+    const library_deck lib = library(model, impacts[n], s, dts[n]);
+    std::istringstream line(answers[n]);
+    int status = -1;
+    line >> status;
+    std::array<double, 14> c{};
+    for (double& x : c) {
+      std::string t;
+      line >> t;
+      x = std::strtod(t.c_str(), nullptr);
+    }
+    if (status != lib.status) {
+      if (++out.mismatches <= 5)
+        ADD_FAILURE() << e.code << " " << e.damping << " impact " << n << ": C status " << status << ", library "
+                      << lib.status << " (" << requests[n] << ")";
+      continue;
+    }
+    if (status != 0) continue;
+    ++out.decks;
+    const auto& w = lib.strings;
+    const std::array<std::pair<const char*, double>, 14> expected{{
+        {"damping", read_back(w.damping)},
+        {"damping_number", lib.deck.damping_number},
+        {"gamma0", lib.deck.gamma0},
+        {"youngs_modulus", read_back(w.youngs_modulus)},
+        {"poisson_ratio", read_back(w.poisson_ratio)},
+        {"wall_youngs_modulus", read_back(w.wall_youngs_modulus)},
+        {"wall_poisson_ratio", read_back(w.wall_poisson_ratio)},
+        {"other_youngs_modulus", read_back(w.other_youngs_modulus)},
+        {"other_poisson_ratio", read_back(w.other_poisson_ratio)},
+        {"cross_youngs_modulus", read_back(w.cross_youngs_modulus)},
+        {"bead_bead_youngs_modulus", read_back(w.bead_bead_youngs_modulus)},
+        {"bead_bead_damping", read_back(w.bead_bead_damping)},
+        {"other_other_damping", read_back(w.other_other_damping)},
+        {"builtin_e", lib.deck.builtin_e.value_or(NAN)},
+    }};
+    if (lib.deck.builtin_e) ++out.builtin;
+    for (std::size_t f = 0; f < c.size(); ++f)
+      if (!same_bits(c[f], expected[f].second) && ++out.mismatches <= 10)
+        ADD_FAILURE() << e.code << " " << e.damping << " impact " << n << ": " << expected[f].first << " C "
+                      << hex(c[f]) << ", library " << hex(expected[f].second) << " (" << requests[n] << ")";
+  }
+  return out;
+}
+
 TEST_F(DemExport, EveryEntryIsTheLibrarysBitForBit) {
   const std::vector<drawn> impacts = draw_impacts(10000, 56);
+  const std::vector<double> continuous(impacts.size(), 0.0);
   for (const exported_model& e : exported_models) {
     const viscor::dem::dem_model& model = viscor::dem::find_dem_model(e.code, e.damping);
-    const auto& s = surrogate_of(model);
     std::vector<std::string> requests;
     for (const drawn& d : impacts)
       requests.push_back("deck " + std::to_string(e.number) + " " + hex(d.target) + " " + impact_text(d.impact));
     const std::vector<std::string> answers = ask(requests);
     ASSERT_EQ(answers.size(), impacts.size());
-    std::size_t decks = 0, builtin = 0, status_mismatches = 0, value_mismatches = 0;
-    for (std::size_t n = 0; n < impacts.size(); ++n) {
-      const library_deck lib = library(model, impacts[n], s);
-      std::istringstream line(answers[n]);
-      int status = -1;
-      line >> status;
-      std::array<double, 14> c{};
-      for (double& x : c) {
-        std::string t;
-        line >> t;
-        x = std::strtod(t.c_str(), nullptr);
-      }
-      if (status != lib.status) {
-        if (++status_mismatches <= 5)
-          ADD_FAILURE() << e.code << " " << e.damping << " impact " << n << ": C status " << status << ", library "
-                        << lib.status << " (" << requests[n] << ")";
-        continue;
-      }
-      if (status != 0) continue;
-      ++decks;
-      const auto& w = lib.strings;
-      const std::array<std::pair<const char*, double>, 14> expected{{
-          {"damping", read_back(w.damping)},
-          {"damping_number", lib.deck.damping_number},
-          {"gamma0", lib.deck.gamma0},
-          {"youngs_modulus", read_back(w.youngs_modulus)},
-          {"poisson_ratio", read_back(w.poisson_ratio)},
-          {"wall_youngs_modulus", read_back(w.wall_youngs_modulus)},
-          {"wall_poisson_ratio", read_back(w.wall_poisson_ratio)},
-          {"other_youngs_modulus", read_back(w.other_youngs_modulus)},
-          {"other_poisson_ratio", read_back(w.other_poisson_ratio)},
-          {"cross_youngs_modulus", read_back(w.cross_youngs_modulus)},
-          {"bead_bead_youngs_modulus", read_back(w.bead_bead_youngs_modulus)},
-          {"bead_bead_damping", read_back(w.bead_bead_damping)},
-          {"other_other_damping", read_back(w.other_other_damping)},
-          {"builtin_e", lib.deck.builtin_e.value_or(NAN)},
-      }};
-      if (lib.deck.builtin_e) ++builtin;
-      for (std::size_t f = 0; f < c.size(); ++f)
-        if (!same_bits(c[f], expected[f].second) && ++value_mismatches <= 10)
-          ADD_FAILURE() << e.code << " " << e.damping << " impact " << n << ": " << expected[f].first << " C "
-                        << hex(c[f]) << ", library " << hex(expected[f].second) << " (" << requests[n] << ")";
-    }
-    EXPECT_EQ(status_mismatches, 0u) << e.code << " " << e.damping;
-    EXPECT_EQ(value_mismatches, 0u) << e.code << " " << e.damping;
+    const compared c = compare_decks(e, impacts, continuous, answers, requests, surrogate_of(model));
+    EXPECT_EQ(c.mismatches, 0u) << e.code << " " << e.damping;
     // The comparison judged decks, not only refusals (about two thirds are reachable).
-    EXPECT_GT(decks, impacts.size() / 2) << e.code << " " << e.damping;
+    EXPECT_GT(c.decks, impacts.size() / 2) << e.code << " " << e.damping;
     if (model.deck_kind == viscor::dem::deck_damping_kind::coefficient_of_restitution)
-      EXPECT_GT(builtin, decks / 2) << e.code << " " << e.damping;
-    std::printf("%-8s %-13s %zu of %zu impacts with a deck, %zu entries differ from the library's; %zu built-in e\n",
-                e.code, e.damping, decks, impacts.size(), value_mismatches, builtin);
+      EXPECT_GT(c.builtin, c.decks / 2) << e.code << " " << e.damping;
+    std::printf("%-8s %-13s %zu of %zu impacts with a deck, %zu differences from the library; %zu built-in e\n",
+                e.code, e.damping, c.decks, impacts.size(), c.mismatches, c.builtin);
+  }
+}
+
+// The step-aware decks (viscor_dem_deck_at_step; dem/stepped_drop.hpp) at steps from T/20
+// to T/100 of each impact: `viscor dem --method surrogate --timestep` bit for bit.
+TEST_F(DemExport, StepAwareEntriesAreTheLibrarysBitForBit) {
+  const std::vector<drawn> impacts = draw_impacts(120, 5658);
+  std::mt19937_64 rng(5659);
+  for (const exported_model& e : exported_models) {
+    const viscor::dem::dem_model& model = viscor::dem::find_dem_model(e.code, e.damping);
+    const auto& s = surrogate_of(model);
+    std::vector<std::string> requests;
+    std::vector<double> dts;
+    for (const drawn& d : impacts) {
+      double dt = 1e-6;  // a step for impacts without a deck (both refuse them alike)
+      try {
+        const double per_t = 20 + static_cast<double>(rng() % 81);
+        dt = viscor::dem::dem_deck_by_surrogate(model, d.impact, d.target, s).calibration.time_scale / per_t;
+      } catch (const viscor::invalid_parameter&) {
+      }
+      dts.push_back(dt);
+      requests.push_back("step " + std::to_string(e.number) + " " + hex(d.target) + " " + hex(dt) + " " +
+                         impact_text(d.impact));
+    }
+    const std::vector<std::string> answers = ask(requests);
+    ASSERT_EQ(answers.size(), impacts.size());
+    const compared c = compare_decks(e, impacts, dts, answers, requests, s);
+    EXPECT_EQ(c.mismatches, 0u) << e.code << " " << e.damping;
+    EXPECT_GT(c.decks, impacts.size() / 2) << e.code << " " << e.damping;
+    std::printf("%-8s %-13s step-aware: %zu of %zu impacts with a deck, %zu differences from the library\n", e.code,
+                e.damping, c.decks, impacts.size(), c.mismatches);
   }
 }
 

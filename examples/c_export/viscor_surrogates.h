@@ -275,6 +275,14 @@ typedef struct viscor_deck {
 /* The deck entries that give e_target (0.01 <= e_target < 1) at this impact, the
    calibration by the surrogate's inverse at the impact's scaled load. */
 viscor_deck viscor_dem_deck(viscor_dem_model model, double e_target, const viscor_dem_impact* impact);
+/* The deck entries that give e_target when the code steps the drop with dt (s), as
+   LAMMPS's and LIGGGHTS's fix nve/sphere do (velocity Verlet), the e read as the drop
+   deck reads it: `viscor dem ... --method surrogate --timestep dt` (docs/dem.md, "The e at
+   the code's time step"); builtin_e also at that step. A few ms: for a deck, not a step. */
+viscor_deck viscor_dem_deck_at_step(viscor_dem_model model, double e_target, const viscor_dem_impact* impact,
+                                    double dt);
+/* The e of a deck damping entry in the drop stepped with dt (NaN for invalid inputs). */
+double viscor_dem_stepped_e(viscor_dem_model model, double deck_damping, const viscor_dem_impact* impact, double dt);
 /* The damping entry alone (NaN where viscor_dem_deck has no entries). */
 double viscor_dem_damping_entry(viscor_dem_model model, double e_target, const viscor_dem_impact* impact);
 /* The e a deck damping entry gives at this impact (NaN for an invalid entry or impact). */
@@ -292,4 +300,4 @@ extern const viscor_surrogate viscor_surrogate_hunt_crossley; /* alpha = 3/2, be
 #endif
 
 #endif /* VISCOR_SURROGATES_H */
-/* viscor sha256 7bf62b16a6676afb4a5c16431c432764ca7a9392ff3bdf9939fc49690f100f8d */
+/* viscor sha256 302fb00f40f7e1937145982320215cd69270e010fd0606368000c43d19748a66 */

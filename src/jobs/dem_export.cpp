@@ -5,6 +5,8 @@
 //   the conventions  dem/deck_convention.hpp damping_scale, deck_youngs_modulus, ...,
 //                    dem/builtin_conversions.hpp (LAMMPS's polynomial and its inverse,
 //                    LIGGGHTS's b(e)), dem/deck_entries.hpp (the like-bead entries)
+//   the time step    dem/stepped_drop.hpp (velocity Verlet, the decks' reading of e, the
+//                    bisection on gamma0)
 // tests/dem_export_test.cpp compiles the export with cc and compares every entry with
 // `viscor dem --method surrogate` bit for bit, so a convention changed on one side only
 // fails there. YADE's two laws clamp the force at zero, which the surrogates (of the
@@ -77,6 +79,14 @@ typedef struct viscor_deck {
 /* The deck entries that give e_target (0.01 <= e_target < 1) at this impact, the
    calibration by the surrogate's inverse at the impact's scaled load. */
 viscor_deck viscor_dem_deck(viscor_dem_model model, double e_target, const viscor_dem_impact* impact);
+/* The deck entries that give e_target when the code steps the drop with dt (s), as
+   LAMMPS's and LIGGGHTS's fix nve/sphere do (velocity Verlet), the e read as the drop
+   deck reads it: `viscor dem ... --method surrogate --timestep dt` (docs/dem.md, "The e at
+   the code's time step"); builtin_e also at that step. A few ms: for a deck, not a step. */
+viscor_deck viscor_dem_deck_at_step(viscor_dem_model model, double e_target, const viscor_dem_impact* impact,
+                                    double dt);
+/* The e of a deck damping entry in the drop stepped with dt (NaN for invalid inputs). */
+double viscor_dem_stepped_e(viscor_dem_model model, double deck_damping, const viscor_dem_impact* impact, double dt);
 /* The damping entry alone (NaN where viscor_dem_deck has no entries). */
 double viscor_dem_damping_entry(viscor_dem_model model, double e_target, const viscor_dem_impact* impact);
 /* The e a deck damping entry gives at this impact (NaN for an invalid entry or impact). */
@@ -254,9 +264,110 @@ static viscor_deck viscor_dk_no_deck(viscor_deck_status status) {
     return d;
 }
 
+/* deck_convention.hpp validate_deck_damping: a coefficient >= 0, an e in [0, 1] (LIGGGHTS: (0, 1]). */
+static int viscor_dk_valid_entry(viscor_dem_model model, double entry) {
+    if (!viscor_dk_finite(entry)) return 0;
+    if (model == VISCOR_LAMMPS_TSUJI) return entry >= 0 && entry <= 1;
+    if (model == VISCOR_LIGGGHTS_HERTZ) return entry > 0 && entry <= 1;
+    return entry >= 0;
+}
+
+/* ---- the drop as LAMMPS and LIGGGHTS step it (dem/stepped_drop.hpp) ---- */
+
+typedef struct viscor_dk_force_law {
+    double m, k, gamma0, alpha, beta, load, v0;
+} viscor_dk_force_law;
+
+static viscor_dk_force_law viscor_dk_force_law_of(const viscor_dk_setup* u, const viscor_dem_impact* in, double gamma0) {
+    viscor_dk_force_law l;
+    l.m = u->c.effective_mass, l.k = u->c.stiffness, l.gamma0 = gamma0;
+    l.alpha = u->s->alpha, l.beta = u->s->beta;
+    l.load = u->gravity + in->force / l.m;
+    l.v0 = in->v0;
+    return l;
+}
+
+/* overlap_acceleration: the load minus F/m; the wall counts a contact from zero overlap on */
+static double viscor_dk_acceleration(const viscor_dk_force_law* l, double x, double u) {
+    double force;
+    if (!(x > 0) && !(x == 0)) return l->load;
+    force = l->k * pow(x, l->alpha) + l->gamma0 * l->k * l->beta * pow(x, l->beta - 1) * u;
+    return l->load - force / l->m;
+}
+
+/* verlet_drop: velocity Verlet from zero overlap at v0; 1 and *e (the deck's fit of the last
+   two in-contact steps) on a rebound, 0 if none within max_steps. */
+static int viscor_dk_verlet_drop(const viscor_dk_force_law* l, double dt, long max_steps, double* e) {
+    double x = 0, u = l->v0, a, x1 = 0, u1, x2 = 0, u2;
+    long n;
+    a = viscor_dk_acceleration(l, x, u);
+    u1 = u, u2 = u;
+    for (n = 0; n < max_steps; ++n) {
+        x2 = x1, u2 = u1, x1 = x, u1 = u;
+        u += dt / 2 * a;
+        x += dt * u;
+        a = viscor_dk_acceleration(l, x, u);
+        u += dt / 2 * a;
+        if (x > 0) continue;
+        if (!(u < 0) || !(x1 > 0) || !(x2 > 0)) continue;
+        {
+            const double xa = pow(x2, l->beta), xb = pow(x1, l->beta);
+            *e = (-u1 - (u1 - u2) / (xa - xb) * xb) / l->v0;
+            return 1;
+        }
+    }
+    return 0;
+}
+
+/* stepped_drop_steps: 50 times 20 T */
+static long viscor_dk_max_steps(const viscor_dk_setup* u, const viscor_dem_impact* in, double dt) {
+    return (long)(1000.0 * viscor_time_scale(u->s, u->c.effective_mass, u->c.stiffness, in->v0) / dt) + 100;
+}
+
+/* The stepped e at damping gamma0 minus the target (0 for no rebound). */
+static double viscor_dk_stepped_miss(const viscor_dk_force_law* l, double gamma0, double target, double dt, long steps) {
+    viscor_dk_force_law at = *l;
+    double e = 0;
+    at.gamma0 = gamma0;
+    if (!viscor_dk_verlet_drop(&at, dt, steps, &e)) e = 0;
+    return e - target;
+}
+
+/* calibrate_at_time_step: bisection from [0, 2 gamma0 of the continuous calibration]; NaN if unreachable. */
+static double viscor_dk_calibrate_at_step(const viscor_dk_force_law* l, double continuous_gamma0, double target, double dt,
+                                          long steps) {
+    double lo = 0, hi = 2 * continuous_gamma0, lo_e, hi_e;
+    int i;
+    if (!(viscor_dk_stepped_miss(l, lo, target, dt, steps) > 0)) return NAN;
+    for (i = 0; viscor_dk_stepped_miss(l, hi, target, dt, steps) > 0; ++i) {
+        if (i == 60 || !(hi > 0)) return NAN;
+        lo = hi, hi *= 2;
+    }
+    for (i = 0; i < 4 * DBL_MANT_DIG + 1100; ++i) {
+        const double mid = (lo + hi) / 2;
+        if (mid == lo || mid == hi) break;
+        if (viscor_dk_stepped_miss(l, mid, target, dt, steps) > 0)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    lo_e = viscor_dk_stepped_miss(l, lo, target, dt, steps), hi_e = viscor_dk_stepped_miss(l, hi, target, dt, steps);
+    return fabs(hi_e) < fabs(lo_e) ? hi : lo;
+}
+
+/* stepped_e_for_deck: the stepped e of a deck damping entry. */
+static double viscor_dk_stepped_e_for_entry(viscor_dem_model model, const viscor_dk_setup* u,
+                                            const viscor_dem_impact* in, double entry, double dt) {
+    const double gamma0 = viscor_dk_damping_number(model, entry) * viscor_dk_damping_scale(model, &u->c);
+    const viscor_dk_force_law l = viscor_dk_force_law_of(u, in, gamma0);
+    double e = 0;
+    if (!viscor_dk_verlet_drop(&l, dt, viscor_dk_max_steps(u, in, dt), &e)) e = 0;
+    return e;
+}
+
 /* The contact's own deck (dem_calibration.hpp dem_deck_for and complete_deck), without
-   the like-bead entries. */
-static viscor_deck viscor_dk_deck(viscor_dem_model model, double e_target, const viscor_dem_impact* in) {
+   the like-bead entries; dt > 0: for the drop stepped with dt (dem_deck_at_time_step). */
+static viscor_deck viscor_dk_deck(viscor_dem_model model, double e_target, const viscor_dem_impact* in, double dt) {
     viscor_dk_setup u;
     viscor_deck d = viscor_dk_no_deck(VISCOR_DECK_OK);
     const viscor_deck_status status = viscor_dk_set_up(model, in, &u);
@@ -268,6 +379,11 @@ static viscor_deck viscor_dk_deck(viscor_dem_model model, double e_target, const
     d.gamma0 = viscor_gamma_for(u.s, e_target, g) /
                viscor_damping_scale(u.s, u.c.effective_mass, u.c.stiffness, in->v0);
     if (d.gamma0 != d.gamma0) return viscor_dk_no_deck(VISCOR_DECK_UNREACHABLE);
+    if (dt > 0) {
+        const viscor_dk_force_law l = viscor_dk_force_law_of(&u, in, 0.0);
+        d.gamma0 = viscor_dk_calibrate_at_step(&l, d.gamma0, e_target, dt, viscor_dk_max_steps(&u, in, dt));
+        if (d.gamma0 != d.gamma0) return viscor_dk_no_deck(VISCOR_DECK_UNREACHABLE);
+    }
     d.damping_number = d.gamma0 / viscor_dk_damping_scale(model, &u.c);
     d.damping = viscor_dk_deck_damping_for(model, d.damping_number);
     if (d.damping != d.damping) return viscor_dk_no_deck(VISCOR_DECK_UNREACHABLE);
@@ -289,7 +405,8 @@ static viscor_deck viscor_dk_deck(viscor_dem_model model, double e_target, const
             d.cross_youngs_modulus = 2 * (1 - d.poisson_ratio * d.poisson_ratio) * u.c.effective_modulus;
     }
     if (model == VISCOR_LAMMPS_TSUJI || model == VISCOR_LIGGGHTS_HERTZ)
-        d.builtin_e = viscor_dk_e_for_entry(model, &u, in, e_target);
+        d.builtin_e = dt > 0 ? viscor_dk_stepped_e_for_entry(model, &u, in, e_target, dt)
+                             : viscor_dk_e_for_entry(model, &u, in, e_target);
     return d;
 }
 
@@ -302,18 +419,20 @@ static viscor_dem_impact viscor_dk_like_beads(const viscor_dem_impact* in, const
     return pair;
 }
 
-viscor_deck viscor_dem_deck(viscor_dem_model model, double e_target, const viscor_dem_impact* impact) {
-    viscor_deck d = viscor_dk_deck(model, e_target, impact);
+/* The deck with its like-bead entries (deck_entries.hpp), continuous or at step dt. */
+static viscor_deck viscor_dk_full_deck(viscor_dem_model model, double e_target, const viscor_dem_impact* impact,
+                                       double dt) {
+    viscor_deck d = viscor_dk_deck(model, e_target, impact, dt);
     if (d.status != VISCOR_DECK_OK) return d;
     if (!impact->pair || impact->other_material) { /* deck_entries.hpp: the like-bead entries read apart */
         const viscor_dem_impact like = viscor_dk_like_beads(impact, &impact->bead);
-        const viscor_deck b = viscor_dk_deck(model, e_target, &like);
+        const viscor_deck b = viscor_dk_deck(model, e_target, &like, dt);
         if (b.status != VISCOR_DECK_OK) return viscor_dk_no_deck(b.status);
         if (!impact->pair) d.bead_bead_youngs_modulus = b.youngs_modulus;
         d.bead_bead_damping = b.damping;
         if (impact->pair) {
             const viscor_dem_impact other = viscor_dk_like_beads(impact, &impact->other);
-            const viscor_deck o = viscor_dk_deck(model, e_target, &other);
+            const viscor_deck o = viscor_dk_deck(model, e_target, &other, dt);
             if (o.status != VISCOR_DECK_OK) return viscor_dk_no_deck(o.status);
             d.other_other_damping = o.damping;
         }
@@ -321,16 +440,31 @@ viscor_deck viscor_dem_deck(viscor_dem_model model, double e_target, const visco
     return d;
 }
 
+viscor_deck viscor_dem_deck(viscor_dem_model model, double e_target, const viscor_dem_impact* impact) {
+    return viscor_dk_full_deck(model, e_target, impact, 0.0);
+}
+
+viscor_deck viscor_dem_deck_at_step(viscor_dem_model model, double e_target, const viscor_dem_impact* impact,
+                                    double dt) {
+    if (!(dt > 0 && dt <= DBL_MAX)) return viscor_dk_no_deck(VISCOR_DECK_INVALID_INPUT);
+    return viscor_dk_full_deck(model, e_target, impact, dt);
+}
+
+double viscor_dem_stepped_e(viscor_dem_model model, double deck_damping, const viscor_dem_impact* impact, double dt) {
+    viscor_dk_setup u;
+    if (!(dt > 0 && dt <= DBL_MAX) || viscor_dk_set_up(model, impact, &u) != VISCOR_DECK_OK ||
+        !viscor_dk_valid_entry(model, deck_damping))
+        return NAN;
+    return viscor_dk_stepped_e_for_entry(model, &u, impact, deck_damping, dt);
+}
+
 double viscor_dem_damping_entry(viscor_dem_model model, double e_target, const viscor_dem_impact* impact) {
-    return viscor_dk_deck(model, e_target, impact).damping;
+    return viscor_dk_deck(model, e_target, impact, 0.0).damping;
 }
 
 double viscor_dem_e_for_entry(viscor_dem_model model, double deck_damping, const viscor_dem_impact* impact) {
     viscor_dk_setup u;
-    if (viscor_dk_set_up(model, impact, &u) != VISCOR_DECK_OK || !viscor_dk_finite(deck_damping)) return NAN;
-    if (model == VISCOR_LAMMPS_TSUJI ? !(deck_damping >= 0 && deck_damping <= 1)
-        : model == VISCOR_LIGGGHTS_HERTZ ? !(deck_damping > 0 && deck_damping <= 1)
-        : !(deck_damping >= 0))
+    if (viscor_dk_set_up(model, impact, &u) != VISCOR_DECK_OK || !viscor_dk_valid_entry(model, deck_damping))
         return NAN;
     return viscor_dk_e_for_entry(model, &u, impact, deck_damping);
 }

@@ -19,6 +19,7 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <type_traits>
 
 namespace viscor::jobs {
@@ -182,18 +183,25 @@ struct dem_job : dem_request {
     dem_forward out;
     dem::dem_deck<Real> d;
     std::optional<Real> dt;  // --timestep: the step the entries are calibrated for, s
+    // the continuous calibration: by the solve, or by the surrogate as the C export does
+    std::function<dem::dem_deck<Real>(const dem::dem_model&, const dem::dem_impact<Real>&, const Real&)> continuous =
+        [](const dem::dem_model& m, const dem::dem_impact<Real>& i, const Real& e) {
+          return dem::dem_deck_for(m, i, e, calibration_options<Real>{});
+        };
     if (method == "surrogate") {
       if constexpr (std::is_same_v<Real, double>) {
         const surrogate::cor_surrogate& s = surrogate_of(model);
-        d = dem::dem_deck_by_surrogate(model, impact, target, s);
-        out.deck = dem::deck_entries_by_surrogate(model, impact, d, target, s);
+        continuous = [&s](const dem::dem_model& m, const dem::dem_impact<Real>& i, const Real& e) {
+          return dem::dem_deck_by_surrogate(m, i, e, s);
+        };
         out.surrogate_bound = s.bound;
       }
-    } else if (!timestep.empty()) {
-      dt = calibrate_at_time_step(model, impact, target, d, out);
+    }
+    if (!timestep.empty()) {
+      dt = calibrate_at_time_step(model, impact, target, continuous, d, out);
     } else {
-      d = dem::dem_deck_for(model, impact, target, calibration_options<Real>{});
-      out.deck = dem::deck_entries_for(model, impact, d, target);
+      d = continuous(model, impact, target);
+      out.deck = dem::deck_entries_for(model, impact, d, target, continuous);
     }
     out.target_e = target_e;
     out.damping_number = of(d.damping_number);
@@ -248,26 +256,24 @@ struct dem_job : dem_request {
   }
 
   /// --timestep: the deck whose drop, stepped by the code with that step, gives the target
-  /// (dem/stepped_drop.hpp), its like-bead entries at the same step, and what the
-  /// continuous calibration's entry gives there. Returns the step, s.
-  template <class Real>
+  /// (dem/stepped_drop.hpp) from the continuous one, its like-bead entries at the same step,
+  /// and what the continuous calibration's entry gives there. Returns the step, s.
+  template <class Real, class Continuous>
   Real calibrate_at_time_step(const dem::dem_model& model, const dem::dem_impact<Real>& impact, const Real& target,
-                              dem::dem_deck<Real>& d, dem_forward& out) const {
-    const dem::dem_deck<Real> continuous = dem::dem_deck_for(model, impact, target, calibration_options<Real>{});
-    const dem::drop_timing<Real> t = dem::drop_timing_for(model, impact, continuous);
+                              const Continuous& continuous, dem::dem_deck<Real>& d, dem_forward& out) const {
+    const dem::dem_deck<Real> c = continuous(model, impact, target);
+    const dem::drop_timing<Real> t = dem::drop_timing_for(model, impact, c);
     const Real dt = dem::time_step_of(timestep, t.time_scale, t.contact_time);
-    d = dem::dem_deck_at_time_step(model, impact, target, dt);
+    d = dem::dem_deck_at_time_step(model, impact, target, dt, c);
     out.deck = dem::deck_entries_for(model, impact, d, target,
                                      [&](const dem::dem_model& m, const dem::dem_impact<Real>& i, const Real& e) {
-                                       return dem::dem_deck_at_time_step(m, i, e, dt);
+                                       return dem::dem_deck_at_time_step(m, i, e, dt, continuous(m, i, e));
                                      });
-    const long max_steps = dem::stepped_drop_steps(t.contact_time, dt);
     dem_forward::at_time_step s;
     s.time_step = working_number::of(dt);
     s.e = working_number::of(d.calibration.scaled.e);
-    s.continuous_damping = dem::deck_number(continuous.damping);
-    s.continuous_e = working_number::of(dem::stepped_e_for_deck(model, impact, continuous, continuous.damping, dt,
-                                                                max_steps));
+    s.continuous_damping = dem::deck_number(c.damping);
+    s.continuous_e = working_number::of(dem::stepped_e_for_deck(model, impact, c, c.damping, dt));
     out.stepped = s;
     return dt;
   }
@@ -291,9 +297,6 @@ struct dem_job : dem_request {
       throw invalid_parameter(VISCOR_FIELD("timestep") " " + timestep + ": yade viscoelastic's own stepping is not "
                               "reproduced yet (YADE's ViscEl drop at T/20 differs from a leapfrog of its force law by "
                               "6e-3 in e): no step-aware entries for it (docs/dem.md)");
-    if (!timestep.empty() && method != "solve")
-      throw invalid_parameter(VISCOR_FIELD("timestep") " " + timestep + " calibrates by stepping the drop from the "
-                              "solved calibration: it needs " VISCOR_FIELD("method") " solve");
     if (method == "solve") return;
     if (method != "surrogate")
       throw invalid_parameter(VISCOR_FIELD("method") " must be solve or surrogate, got '" + method + "'");

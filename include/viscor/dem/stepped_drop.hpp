@@ -20,7 +20,7 @@
 
 #include <viscor/dem/dem_calibration.hpp>
 
-#include <boost/math/tools/toms748_solve.hpp>
+#include <boost/math/tools/precision.hpp>
 
 #include <cmath>
 #include <cstdint>
@@ -149,14 +149,26 @@ Real time_step_of(const std::string& text, const Real& time_scale, const Real& c
   return dt;
 }
 
-/// The gamma0 whose drop, stepped with dt by the model's code, rebounds with target_e
-/// (TOMS 748 on gamma0 from a bracket around the continuous calibration's `gamma0`);
-/// unreachable_target when no damping gives it at this step.
+/// The steps a stepped drop may take: 50 times 20 T (the contact lasts about 3.3 T), so
+/// that a slow, damped or loaded contact still ends within them. From T alone, without a
+/// solve, so that the C export states the same cap.
+template <class Real>
+long stepped_drop_steps(const Real& time_scale, const Real& dt) {
+  return static_cast<long>(static_cast<double>(stepped_drop_budget * 20 * time_scale / dt)) + 100;
+}
+
+/// The gamma0 whose drop, stepped with dt by the model's code, rebounds with target_e:
+/// from the bracket [0, 2 gamma0 of the continuous calibration] (doubled while it is
+/// not one), bisection down to neighbouring numbers, then the end whose e is nearer.
+/// unreachable_target when no damping gives the target at this step.
+// NOTE: plain bisection, not TOMS 748, so that the C export (jobs/dem_export) states the
+// same steps: its step-aware entries are these bits.
 template <class Real>
 physical_calibration<Real> calibrate_at_time_step(const dem_model& model, const physical_parameters<Real>& p,
                                                   const physical_calibration<Real>& continuous, const Real& target_e,
-                                                  const Real& dt, long max_steps) {
-  physical_calibration<Real> c = continuous;
+                                                  const Real& dt) {
+  using std::abs;
+  const long max_steps = stepped_drop_steps(continuous.time_scale, dt);
   int solves = 0;
   auto miss = [&](const Real& gamma0) {
     physical_parameters<Real> at = p;
@@ -165,64 +177,59 @@ physical_calibration<Real> calibrate_at_time_step(const dem_model& model, const 
     const stepped_drop<Real> d = step_drop(model, at, dt, max_steps);
     return Real((d.rebound ? d.e : Real(0)) - target_e);
   };
-  Real lo = 0, hi = continuous.gamma0 > 0 ? Real(2 * continuous.gamma0) : Real(1);
+  Real lo = 0, hi = 2 * continuous.gamma0;
   const Real lo_miss = miss(lo);
   if (!(lo_miss > 0))
     throw unreachable_target("target_e = " + to_decimal_string(target_e) + " is unreachable at this time step: " +
                              "the undamped drop stepped with dt = " + to_decimal_string(dt) + " s rebounds with " +
                              to_decimal_string(Real(lo_miss + target_e)));
-  Real hi_miss = miss(hi);
-  for (int i = 0; hi_miss > 0; ++i) {
-    if (i == 60) throw unreachable_target("target_e = " + to_decimal_string(target_e) + " is unreachable at this time step");
-    lo = hi, hi *= 2, hi_miss = miss(hi);
+  for (int i = 0; miss(hi) > 0; ++i) {
+    if (i == 60 || !(hi > 0))
+      throw unreachable_target("target_e = " + to_decimal_string(target_e) + " is unreachable at this time step");
+    lo = hi, hi *= 2;
   }
-  std::uintmax_t iterations = 200;
-  // NOTE: gamma0 to 50 bits: the stepped e jumps by its fit's error where the number of
-  // contact steps changes, far below the 1e-5 a deck is checked to.
-  const auto bracket = boost::math::tools::toms748_solve(miss, lo, hi, miss(lo), hi_miss,
-                                                         boost::math::tools::eps_tolerance<Real>(50), iterations);
-  c.gamma0 = (bracket.first + bracket.second) / 2;
-  c.scaled.gamma_lo = bracket.first, c.scaled.gamma_hi = bracket.second;
-  using std::abs;
-  c.scaled.e = miss(c.gamma0) + target_e;
+  for (int i = 0; i < 4 * boost::math::tools::digits<Real>() + 1100; ++i) {
+    const Real mid = (lo + hi) / 2;
+    if (mid == lo || mid == hi) break;
+    if (miss(mid) > 0)
+      lo = mid;
+    else
+      hi = mid;
+  }
+  const Real lo_e = miss(lo), hi_e = miss(hi);
+  physical_calibration<Real> c = continuous;
+  c.gamma0 = abs(hi_e) < abs(lo_e) ? hi : lo;
+  c.scaled.gamma = c.gamma0 * (continuous.scaled.gamma / continuous.gamma0);
+  c.scaled.gamma_lo = lo, c.scaled.gamma_hi = hi;
+  c.scaled.e = (abs(hi_e) < abs(lo_e) ? hi_e : lo_e) + target_e;
   c.scaled.target_bound = abs(c.scaled.e - target_e);
   c.scaled.solves = solves;
   return c;
 }
 
-/// The steps a stepped drop of this contact may take: 50 contact times of the continuous impact.
-template <class Real>
-long stepped_drop_steps(const Real& contact_time, const Real& dt) {
-  return static_cast<long>(static_cast<double>(stepped_drop_budget * contact_time / dt)) + 100;
-}
-
 /// The stepped drop's e at a deck damping entry (0 when the bead does not come back).
 template <class Real>
 Real stepped_e_for_deck(const dem_model& model, const dem_impact<Real>& impact, const dem_deck<Real>& d,
-                        const Real& deck_damping, const Real& dt, long max_steps) {
+                        const Real& deck_damping, const Real& dt) {
   physical_parameters<Real> at = physical_impact(d.contact, impact, Real(0));
   at.gamma0 = damping_number(model, deck_damping) * damping_scale(model, d.contact);
-  const stepped_drop<Real> s = step_drop(model, at, dt, max_steps);
+  const stepped_drop<Real> s = step_drop(model, at, dt, stepped_drop_steps(d.calibration.time_scale, dt));
   return s.rebound ? s.e : Real(0);
 }
 
-/// The deck that gives target_e when the code steps the drop with dt (s): the continuous
-/// calibration (dem_deck_for) as the bracket, calibrate_at_time_step, then the entries as
-/// complete_deck makes them, the built-in conversion's e also at that step.
+/// The deck that gives target_e when the code steps the drop with dt (s), from the
+/// continuous calibration's deck (dem_deck_for, or dem_deck_by_surrogate as the C export
+/// does): calibrate_at_time_step, then the entries as complete_deck makes them, the
+/// built-in conversion's e also at that step.
 template <class Real>
 dem_deck<Real> dem_deck_at_time_step(const dem_model& model, const dem_impact<Real>& impact, const Real& target_e,
-                                     const Real& dt) {
-  dem_deck<Real> d = dem_deck_for(model, impact, target_e);
-  const std::optional<Real> tau = e_for_deck(model, impact, d.damping).contact_time;
-  const long max_steps = stepped_drop_steps(Real(tau.value_or(Real(10)) * d.calibration.time_scale), dt);
+                                     const Real& dt, const dem_deck<Real>& continuous) {
+  dem_deck<Real> d = continuous;
   const physical_parameters<Real> p = physical_impact(d.contact, impact, Real(0));
-  const physical_calibration<Real> continuous = d.calibration;
-  d.calibration = calibrate_at_time_step(model, p, continuous, target_e, dt, max_steps);
-  d.calibration.scaled.gamma = d.calibration.gamma0 * (continuous.scaled.gamma / continuous.gamma0);
+  d.calibration = calibrate_at_time_step(model, p, continuous.calibration, target_e, dt);
   complete_deck(model, impact, target_e, d,
-                [&](const Real& entry) { return stepped_e_for_deck(model, impact, d, entry, dt, max_steps); });
+                [&](const Real& entry) { return stepped_e_for_deck(model, impact, d, entry, dt); });
   return d;
 }
-
 
 }  // namespace viscor::dem
