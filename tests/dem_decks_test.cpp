@@ -78,18 +78,26 @@ std::string slurp(const fs::path& path) {
   return s.str();
 }
 
-TEST(DemDecks, YadeScriptAsksViscor) {
+/// Sets `command` to `program_name` run with the build tree's Python module on its path
+/// (build/python, next to the CLI: python/CMakeLists.txt); leaves it empty after skipping
+/// the test (failing it under VISCOR_REQUIRE_ALL_DEPS) when either is missing.
+void program_with_viscor_python(const std::string& program_name, std::string& command) {
   if (std::string(VISCOR_CLI_PATH).empty()) GTEST_SKIP() << "viscor CLI not built";
-  const auto yade = dem_drop::find_program("yade");
-  if (!yade) VISCOR_SKIP_OR_FAIL_MISSING("yade is not installed (tools/install-deps.sh installs it)");
-  // the build tree's Python module: build/python, next to the CLI (python/CMakeLists.txt)
+  const auto program = dem_drop::find_program(program_name);
+  if (!program) VISCOR_SKIP_OR_FAIL_MISSING(program_name << " is not installed (tools/install-deps.sh installs it)");
   const fs::path python = fs::path(VISCOR_CLI_PATH).parent_path() / "python";
   if (!fs::exists(python / "viscor" / "__init__.py"))
     VISCOR_SKIP_OR_FAIL_MISSING("viscor's Python module is not built in " << python.string());
+  command = "PYTHONPATH='" + python.string() + "' '" + *program + "'";
+}
+
+TEST(DemDecks, YadeScriptAsksViscor) {
+  std::string yade;
+  program_with_viscor_python("yade", yade);
+  if (yade.empty()) return;
   scratch_dir dir{"viscor_dem_decks"};
   ASSERT_FALSE(dir.path.empty());
-  const auto ran = run_in(dir.path, "PYTHONPATH='" + python.string() + "' '" + *yade +
-                                        "' -n -x '" VISCOR_SOURCE_DIR "/examples/dem/yade_drop.py'");
+  const auto ran = run_in(dir.path, yade + " -n -x '" VISCOR_SOURCE_DIR "/examples/dem/yade_drop.py'");
   ASSERT_EQ(ran.status, 0) << tail(ran.out);
   EXPECT_EQ(ran.out.find("warning"), std::string::npos) << tail(ran.out);  // the clamp let go before zero overlap
   const std::vector<double> e = printed_rebounds(ran.out);
@@ -102,16 +110,12 @@ TEST(DemDecks, YadeScriptAsksViscor) {
 // its own betan from the hook, and each first impact rebounds with the target, where the
 // pair's betan would miss the slow polymer bead's by 2.9e-3 (the script prints both).
 TEST(DemDecks, YadePerContactDampingGivesEachFirstImpactTheTarget) {
-  if (std::string(VISCOR_CLI_PATH).empty()) GTEST_SKIP() << "viscor CLI not built";
-  const auto yade = dem_drop::find_program("yade");
-  if (!yade) VISCOR_SKIP_OR_FAIL_MISSING("yade is not installed (tools/install-deps.sh installs it)");
-  const fs::path python = fs::path(VISCOR_CLI_PATH).parent_path() / "python";
-  if (!fs::exists(python / "viscor" / "__init__.py"))
-    VISCOR_SKIP_OR_FAIL_MISSING("viscor's Python module is not built in " << python.string());
+  std::string yade;
+  program_with_viscor_python("yade", yade);
+  if (yade.empty()) return;
   scratch_dir dir{"viscor_dem_decks"};
   ASSERT_FALSE(dir.path.empty());
-  const auto ran = run_in(dir.path, "PYTHONPATH='" + python.string() + "' '" + *yade +
-                                        "' -n -x '" VISCOR_SOURCE_DIR "/examples/dem/yade_per_contact.py'");
+  const auto ran = run_in(dir.path, yade + " -n -x '" VISCOR_SOURCE_DIR "/examples/dem/yade_per_contact.py'");
   ASSERT_EQ(ran.status, 0) << tail(ran.out);
   static const std::regex line(R"(first impact (\w+): e = ([-+0-9.eE]+) \(target ([0-9.]+)\), betan ([-+0-9.eE]+)(; the pair's betan would give ([0-9.]+))?)");
   std::vector<std::string> names;
@@ -131,16 +135,12 @@ TEST(DemDecks, YadePerContactDampingGivesEachFirstImpactTheTarget) {
 }
 
 TEST(DemDecks, LammpsDeckImportsViscor) {
-  if (std::string(VISCOR_CLI_PATH).empty()) GTEST_SKIP() << "viscor CLI not built";
-  const auto lmp = dem_drop::find_program("lmp");
-  if (!lmp) VISCOR_SKIP_OR_FAIL_MISSING("lmp is not installed (tools/install-deps.sh installs lammps)");
-  const fs::path python = fs::path(VISCOR_CLI_PATH).parent_path() / "python";
-  if (!fs::exists(python / "viscor" / "__init__.py"))
-    VISCOR_SKIP_OR_FAIL_MISSING("viscor's Python module is not built in " << python.string());
+  std::string lmp;
+  program_with_viscor_python("lmp", lmp);
+  if (lmp.empty()) return;
   scratch_dir dir{"viscor_dem_decks"};
   ASSERT_FALSE(dir.path.empty());
-  const std::string deck = "PYTHONPATH='" + python.string() + "' '" + *lmp +
-                           "' -log none -in '" VISCOR_SOURCE_DIR "/examples/dem/lammps_drop.in'";
+  const std::string deck = lmp + " -log none -in '" VISCOR_SOURCE_DIR "/examples/dem/lammps_drop.in'";
   const auto ran = run_in(dir.path, deck);
   const auto ran_half = run_in(dir.path, deck + " -var dt_divisor 2");
   ASSERT_EQ(ran.status, 0) << tail(ran.out);

@@ -45,39 +45,32 @@ class SameAsTheCli(unittest.TestCase):
         cli = cli_json("approx", "--model", "kuwabara_kono", "--gamma", "0.01", "--g", "0.5")
         self.assertEqual(r.to_dict(), cli)
 
-    def test_dem(self):
-        options = dict(damping="tsuji", youngs_modulus="3e9", poisson_ratio="0.35", radius="1e-3", density="1200",
-                       target_e="0.5", v0="0.01", gravity="9.81")
-        r = viscor.dem("lammps", **options)
-        cli = cli_json("dem", "lammps", *[w for k, v in options.items() for w in ("--" + k.replace("_", "-"), v)])
+    def dem_as_the_cli(self, code, **options):
+        """viscor.dem's fields, checked equal to `viscor dem CODE --OPTION VALUE ... --json`'s (timings aside)."""
+        cli = cli_json("dem", code, *[w for k, v in options.items() for w in ("--" + k.replace("_", "-"), v)])
         cli.pop("seconds", None)
-        mine = r.to_dict()
+        mine = viscor.dem(code, **options).to_dict()
         mine.pop("seconds", None)
         self.assertEqual(mine, cli)
+        return mine
+
+    def test_dem(self):
+        self.dem_as_the_cli("lammps", damping="tsuji", youngs_modulus="3e9", poisson_ratio="0.35", radius="1e-3",
+                            density="1200", target_e="0.5", v0="0.01", gravity="9.81")
 
     def test_dem_by_surrogate(self):
         # The C export's entries (docs/dem.md): the same method in Python and on the command line.
-        options = dict(damping="hertz", youngs_modulus="3e9", poisson_ratio="0.35", radius="1e-3", density="1200",
-                       target_e="0.5", v0="0.01", gravity="9.81", method="surrogate")
-        r = viscor.dem("liggghts", **options)
-        cli = cli_json("dem", "liggghts", *[w for k, v in options.items() for w in ("--" + k.replace("_", "-"), v)])
-        cli.pop("seconds", None)
-        mine = r.to_dict()
-        mine.pop("seconds", None)
-        self.assertEqual(mine, cli)
+        mine = self.dem_as_the_cli("liggghts", damping="hertz", youngs_modulus="3e9", poisson_ratio="0.35",
+                                   radius="1e-3", density="1200", target_e="0.5", v0="0.01", gravity="9.81",
+                                   method="surrogate")
         self.assertEqual(mine["method"], "surrogate")
         self.assertIn("error_bound", mine)
 
     def test_dem_at_a_time_step(self):
         # Entries for the e the code's own update gives at T/50 (docs/dem.md): the CLI's, and at that step.
-        options = dict(damping="tsuji", youngs_modulus="3e9", poisson_ratio="0.35", radius="1e-3", density="1200",
-                       target_e="0.5", v0="0.01", gravity="9.81", timestep="T/50")
-        r = viscor.dem("lammps", **options)
-        cli = cli_json("dem", "lammps", *[w for k, v in options.items() for w in ("--" + k.replace("_", "-"), v)])
-        cli.pop("seconds", None)
-        mine = r.to_dict()
-        mine.pop("seconds", None)
-        self.assertEqual(mine, cli)
+        mine = self.dem_as_the_cli("lammps", damping="tsuji", youngs_modulus="3e9", poisson_ratio="0.35",
+                                   radius="1e-3", density="1200", target_e="0.5", v0="0.01", gravity="9.81",
+                                   timestep="T/50")
         self.assertEqual(mine["timestep"], "T/50")
         self.assertNotEqual(mine["deck"]["damping"], mine["continuous_deck_damping"])
 
