@@ -5,6 +5,7 @@
 // --method surrogate` bit for bit (its deck strings read back), the same refusals, and
 // the built-in conversions' e. Independently of the surrogate, the exact Taylor solve of
 // each code's force with the exported entry lands on the target within the stated bound.
+#include <viscor/dem/deck_entries.hpp>
 #include <viscor/dem/stepped_drop.hpp>
 #include <viscor/dem/surrogate_deck.hpp>
 #include <viscor/jobs/dem_job.hpp>

@@ -5,7 +5,6 @@
 // The C export states these steps in C (jobs/dem_export.hpp): the same bits.
 #pragma once
 
-#include <viscor/dem/deck_entries.hpp>
 #include <viscor/dem/dem_calibration.hpp>
 #include <viscor/surrogate/cor_surrogate.hpp>
 
@@ -68,16 +67,6 @@ inline dem_deck<double> dem_deck_by_surrogate(const dem_model& model, const dem_
   });
   if (d.builtin_e && std::isnan(*d.builtin_e)) d.builtin_e.reset();
   return d;
-}
-
-/// The deck entries as written into the input, the like-bead decks by the surrogate too.
-inline deck_strings deck_entries_by_surrogate(const dem_model& model, const dem_impact<double>& impact,
-                                              const dem_deck<double>& d, double target_e,
-                                              const surrogate::cor_surrogate& s) {
-  return deck_entries_for(model, impact, d, target_e,
-                          [&](const dem_model& m, const dem_impact<double>& i, const double& t) {
-                            return dem_deck_by_surrogate(m, i, t, s);
-                          });
 }
 
 }  // namespace viscor::dem
