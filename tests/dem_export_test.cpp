@@ -9,6 +9,7 @@
 #include <viscor/dem/stepped_drop.hpp>
 #include <viscor/dem/surrogate_deck.hpp>
 #include <viscor/jobs/dem_job.hpp>
+#include <viscor/jobs/physical_inputs.hpp>
 #include <viscor/jobs/surrogate_export.hpp>
 #include <viscor/jobs/surrogate_files.hpp>
 
@@ -268,6 +269,43 @@ TEST_F(DemExport, EveryEntryIsTheLibrarysBitForBit) {
     std::printf("%-8s %-13s %zu of %zu impacts with a deck, %zu differences from the library; %zu built-in e\n",
                 e.code, e.damping, c.decks, impacts.size(), c.mismatches, c.builtin);
   }
+}
+
+// viscor_contact_of is the contact `viscor cor` and `viscor calibrate` take from the same
+// materials (jobs/physical_inputs.hpp bead_of_material, acting_gravity), bit for bit: with
+// it the calculator page (web/) answers for a material bead as they do.
+TEST_F(DemExport, TheContactIsTheOneCorAndCalibrateTake) {
+  const std::vector<drawn> impacts = draw_impacts(10000, 58);
+  std::vector<std::string> requests;
+  for (const drawn& d : impacts) requests.push_back("contact 0 0 " + impact_text(d.impact));
+  const std::vector<std::string> answers = ask(requests);
+  ASSERT_EQ(answers.size(), impacts.size());
+  const viscor::contact_law tsuji = viscor::law_by_name("tsuji");
+  std::size_t valid = 0, mismatches = 0;
+  for (std::size_t n = 0; n < impacts.size(); ++n) {
+    const dem_impact<double>& i = impacts[n].impact;
+    const auto [m, k] = viscor::jobs::bead_of_material<double>(tsuji, i.bead.youngs_modulus, i.bead.poisson_ratio,
+                                                               i.bead.radius, std::nullopt, i.bead.density, i.kind,
+                                                               i.partner);
+    const double gravity = i.kind == contact_kind::pair ? 0.0 : i.gravity;
+    std::istringstream line(answers[n]);
+    int ok = 0;
+    std::string modulus, radius, mass, stiffness, felt;
+    line >> ok >> modulus >> radius >> mass >> stiffness >> felt;
+    if (ok != 1) {
+      ADD_FAILURE() << "impact " << n << " refused: " << requests[n];
+      continue;
+    }
+    ++valid;
+    if ((!same_bits(read_back(mass), m) || !same_bits(read_back(stiffness), k) ||
+         !same_bits(read_back(felt), gravity)) &&
+        ++mismatches <= 5)
+      ADD_FAILURE() << "impact " << n << ": C m " << mass << " k " << stiffness << " gravity " << felt
+                    << ", library " << hex(m) << " " << hex(k) << " " << hex(gravity) << " (" << requests[n] << ")";
+  }
+  EXPECT_EQ(valid, impacts.size());
+  EXPECT_EQ(mismatches, 0u);
+  std::printf("viscor_contact_of: %zu impacts, %zu differences from bead_of_material\n", valid, mismatches);
 }
 
 // The step-aware decks (viscor_dem_deck_at_step; dem/stepped_drop.hpp) at steps from T/20

@@ -36,6 +36,8 @@ packages=(
   python3-xarray python3-netcdf4  # Table.to_xarray() and reading NetCDF back (docs/python.md)
   clang libclang-rt-14-dev  # libFuzzer and clang's sanitizers: tests/fuzz (docs/robustness.md)
   libc++-14-dev libc++abi-14-dev  # the fuzzers' C++ library (tests/fuzz/CMakeLists.txt says why)
+  emscripten                # the calculator page's WebAssembly: web/ (docs/web.md)
+  chromium chromium-driver python3-selenium  # its test in a real headless browser (tests/web/)
 )
 
 case "${1:-}" in

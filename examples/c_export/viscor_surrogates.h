@@ -272,6 +272,19 @@ typedef struct viscor_deck {
     double builtin_e;            /* tsuji, hertz: the e the code's own conversion gives for e_target */
 } viscor_deck;
 
+/* The contact viscor sees in this impact (no model: the bead, its wall or second bead,
+   v0 > 0, gravity >= 0 and a finite force checked): the reduced mass and the Hertz
+   stiffness k = (4/3) E* sqrt(R*) that `viscor cor` and `viscor calibrate` take from the
+   same materials, and the gravity the relative motion feels (0 for a pair: both beads
+   fall alike). valid is 0, the rest NaN, for invalid inputs. */
+typedef struct viscor_contact {
+    int valid;
+    double effective_modulus, effective_radius; /* E* (Pa), R* (m) */
+    double mass, stiffness;                     /* m* (kg), k (N/m^1.5) */
+    double gravity;                             /* m/s^2 */
+} viscor_contact;
+viscor_contact viscor_contact_of(const viscor_dem_impact* impact);
+
 /* The deck entries that give e_target (0.01 <= e_target < 1) at this impact, the
    calibration by the surrogate's inverse at the impact's scaled load. */
 viscor_deck viscor_dem_deck(viscor_dem_model model, double e_target, const viscor_dem_impact* impact);
@@ -300,4 +313,4 @@ extern const viscor_surrogate viscor_surrogate_hunt_crossley; /* alpha = 3/2, be
 #endif
 
 #endif /* VISCOR_SURROGATES_H */
-/* viscor sha256 302fb00f40f7e1937145982320215cd69270e010fd0606368000c43d19748a66 */
+/* viscor sha256 95440c9254710cbb256f0f90c89602805259b4b0aad6b5e765b5a5bf58c8260c */

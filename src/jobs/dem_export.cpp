@@ -76,6 +76,19 @@ typedef struct viscor_deck {
     double builtin_e;            /* tsuji, hertz: the e the code's own conversion gives for e_target */
 } viscor_deck;
 
+/* The contact viscor sees in this impact (no model: the bead, its wall or second bead,
+   v0 > 0, gravity >= 0 and a finite force checked): the reduced mass and the Hertz
+   stiffness k = (4/3) E* sqrt(R*) that `viscor cor` and `viscor calibrate` take from the
+   same materials, and the gravity the relative motion feels (0 for a pair: both beads
+   fall alike). valid is 0, the rest NaN, for invalid inputs. */
+typedef struct viscor_contact {
+    int valid;
+    double effective_modulus, effective_radius; /* E* (Pa), R* (m) */
+    double mass, stiffness;                     /* m* (kg), k (N/m^1.5) */
+    double gravity;                             /* m/s^2 */
+} viscor_contact;
+viscor_contact viscor_contact_of(const viscor_dem_impact* impact);
+
 /* The deck entries that give e_target (0.01 <= e_target < 1) at this impact, the
    calibration by the surrogate's inverse at the impact's scaled load. */
 viscor_deck viscor_dem_deck(viscor_dem_model model, double e_target, const viscor_dem_impact* impact);
@@ -112,6 +125,12 @@ static double viscor_dk_mass(const viscor_bead* b) {
 
 static int viscor_dk_representable(double x) { return viscor_dk_finite(x) && x >= DBL_MIN; }
 
+static int viscor_dk_valid_wall(const viscor_dem_impact* in) {
+    const double nu = in->wall_poisson_ratio;
+    return viscor_dk_finite(in->wall_youngs_modulus) && in->wall_youngs_modulus > 0 && viscor_dk_finite(nu) &&
+           nu > -1 && nu <= 0.5;
+}
+
 /* dem/hertz_contact.hpp hertz_contact: E*, R*, m*, k. */
 typedef struct viscor_dk_contact {
     double effective_modulus, effective_radius, effective_mass, stiffness;
@@ -124,9 +143,7 @@ static int viscor_dk_make_contact(const viscor_dem_impact* in, viscor_dk_contact
     if (!in->pair && in->wall_material) {
         const double nu = in->wall_poisson_ratio;
         double compliance;
-        if (!(viscor_dk_finite(in->wall_youngs_modulus) && in->wall_youngs_modulus > 0 && viscor_dk_finite(nu) &&
-              nu > -1 && nu <= 0.5))
-            return 0;
+        if (!viscor_dk_valid_wall(in)) return 0;
         compliance = (1 - b->poisson_ratio * b->poisson_ratio) / b->youngs_modulus;
         compliance += (1 - nu * nu) / in->wall_youngs_modulus;
         c->effective_modulus = 1 / compliance;
@@ -148,6 +165,41 @@ static int viscor_dk_make_contact(const viscor_dem_impact* in, viscor_dk_contact
         c->effective_radius = in->pair ? b->radius / 2 : b->radius;
         c->effective_mass = in->pair ? mass / 2 : mass;
     }
+    c->stiffness = 4 * c->effective_modulus * sqrt(c->effective_radius) / 3;
+    return viscor_dk_representable(c->effective_mass) && viscor_dk_representable(c->effective_radius) &&
+           viscor_dk_representable(c->stiffness);
+}
+
+/* jobs/physical_inputs.hpp bead_of_material, the contact `viscor cor` and `viscor calibrate`
+   take from materials: the quantities of viscor_dk_make_contact in that function's order
+   of operations (core/elastic_contact.hpp sphere_mass, E* as the inverse of the summed
+   compliances), which differs from the DEM job's in the last bit. */
+static double viscor_dk_compliance(double youngs_modulus, double poisson_ratio) {
+    return (1 - poisson_ratio * poisson_ratio) / youngs_modulus;
+}
+
+static int viscor_dk_cor_contact(const viscor_dem_impact* in, viscor_dk_contact* c) {
+    const viscor_bead* b = &in->bead;
+    const double mass = 4 * viscor_dk_pi * b->density * b->radius * b->radius * b->radius / 3;
+    double compliance;
+    if (!viscor_dk_valid_bead(b)) return 0;
+    compliance = viscor_dk_compliance(b->youngs_modulus, b->poisson_ratio);
+    if (!in->pair) {
+        if (in->wall_material) {
+            if (!viscor_dk_valid_wall(in)) return 0;
+            compliance += viscor_dk_compliance(in->wall_youngs_modulus, in->wall_poisson_ratio);
+        }
+        c->effective_radius = b->radius;
+        c->effective_mass = mass;
+    } else {
+        const viscor_bead* o = in->other_material ? &in->other : b;
+        const double other_mass = in->other_material ? viscor_dk_mass(o) : mass;
+        if (!viscor_dk_valid_bead(o)) return 0;
+        compliance += viscor_dk_compliance(o->youngs_modulus, o->poisson_ratio);
+        c->effective_radius = b->radius * o->radius / (b->radius + o->radius);
+        c->effective_mass = mass * other_mass / (mass + other_mass);
+    }
+    c->effective_modulus = 1 / compliance;
     c->stiffness = 4 * c->effective_modulus * sqrt(c->effective_radius) / 3;
     return viscor_dk_representable(c->effective_mass) && viscor_dk_representable(c->effective_radius) &&
            viscor_dk_representable(c->stiffness);
@@ -232,7 +284,10 @@ static int viscor_dk_valid_impact(viscor_dem_model model, const viscor_dem_impac
            viscor_dk_finite(in->gravity) && in->gravity >= 0 && viscor_dk_finite(in->force);
 }
 
-/* The contact, its surrogate, m, k and the load felt (gravity drops out of a pair). */
+/* physical_inputs.hpp acting_gravity: both beads of a pair fall alike. */
+static double viscor_dk_acting_gravity(const viscor_dem_impact* in) { return in->pair ? 0.0 : in->gravity; }
+
+/* The contact, its surrogate, m, k and the load felt. */
 typedef struct viscor_dk_setup {
     viscor_dk_contact c;
     const viscor_surrogate* s;
@@ -243,7 +298,7 @@ static viscor_deck_status viscor_dk_set_up(viscor_dem_model model, const viscor_
     if (!viscor_dk_valid_impact(model, in) || !viscor_dk_make_contact(in, &u->c)) return VISCOR_DECK_INVALID_INPUT;
     u->s = viscor_surrogate_named(viscor_dk_law(model));
     if (!u->s) return VISCOR_DECK_NO_SURROGATE;
-    u->gravity = in->pair ? 0.0 : in->gravity;
+    u->gravity = viscor_dk_acting_gravity(in);
     return VISCOR_DECK_OK;
 }
 
@@ -438,6 +493,21 @@ static viscor_deck viscor_dk_full_deck(viscor_dem_model model, double e_target, 
         }
     }
     return d;
+}
+
+viscor_contact viscor_contact_of(const viscor_dem_impact* impact) {
+    viscor_contact out;
+    viscor_dk_contact c;
+    if (!viscor_dk_valid_impact(VISCOR_LAMMPS_VELOCITY, impact) || !viscor_dk_cor_contact(impact, &c)) {
+        out.valid = 0;
+        out.effective_modulus = out.effective_radius = out.mass = out.stiffness = out.gravity = NAN;
+        return out;
+    }
+    out.valid = 1;
+    out.effective_modulus = c.effective_modulus, out.effective_radius = c.effective_radius;
+    out.mass = c.effective_mass, out.stiffness = c.stiffness;
+    out.gravity = viscor_dk_acting_gravity(impact);
+    return out;
 }
 
 viscor_deck viscor_dem_deck(viscor_dem_model model, double e_target, const viscor_dem_impact* impact) {

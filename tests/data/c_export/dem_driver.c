@@ -3,6 +3,7 @@
  *   deck  MODEL e_target IMPACT  -> status and the 14 numbers of viscor_deck (viscor_dem_deck)
  *   entry MODEL deck_damping IMPACT -> e (viscor_dem_e_for_entry)
  *   step  MODEL e_target dt IMPACT -> as deck, for the drop stepped with dt (viscor_dem_deck_at_step)
+ *   contact 0 0 IMPACT -> valid, E*, R*, m*, k and the gravity felt (viscor_contact_of)
  * IMPACT is: pair wall_material E nu R rho wall_E wall_nu other_material oE onu oR orho v0 gravity force.
  * Numbers are read with strtod (hexadecimal or decimal). Built with no viscor include
  * path: only the exported pair and the C standard library. */
@@ -32,7 +33,11 @@ int main(void) {
         in.other.youngs_modulus = number(), in.other.poisson_ratio = number();
         in.other.radius = number(), in.other.density = number();
         in.v0 = number(), in.gravity = number(), in.force = number();
-        if (kind[0] == 'd' || kind[0] == 's') {
+        if (kind[0] == 'c') {
+            const viscor_contact c = viscor_contact_of(&in);
+            printf("%d %a %a %a %a %a\n", c.valid, c.effective_modulus, c.effective_radius, c.mass, c.stiffness,
+                   c.gravity);
+        } else if (kind[0] == 'd' || kind[0] == 's') {
             const viscor_deck d = kind[0] == 'd' ? viscor_dem_deck((viscor_dem_model)model, value, &in)
                                                  : viscor_dem_deck_at_step((viscor_dem_model)model, value, &in, dt);
             printf("%d %a %a %a %a %a %a %a %a %a %a %a %a %a %a\n", (int)d.status, d.damping, d.damping_number,
