@@ -54,8 +54,8 @@ function wasmApi(module) {
       const [absE, absESquared, relOneMinusE] = read(3);
       return {absE, absESquared, relOneMinusE};
     },
-    deck(model, eTarget) {
-      module._viscor_web_deck(model, eTarget, buffer);
+    deck(model, eTarget, dt) {
+      module._viscor_web_deck(model, eTarget, dt, buffer);
       const values = read(1 + DECK_FIELDS.length);
       const deck = {status: values[0]};
       DECK_FIELDS.forEach((name, i) => { deck[name] = values[i + 1]; });
@@ -92,7 +92,7 @@ const shown = (x) => (Number.isFinite(x) ? deckNumber(x) : "none");
 
 const FIELDS = ["youngs_modulus", "poisson_ratio", "radius", "density", "m", "k", "wall_youngs_modulus",
   "wall_poisson_ratio", "other_youngs_modulus", "other_poisson_ratio", "other_radius", "other_density",
-  "v0", "gravity", "force", "target_e", "gamma0"];
+  "v0", "gravity", "force", "target_e", "gamma0", "timestep"];
 
 function choice(name) {
   const checked = document.querySelector(`input[name="${name}"]:checked`);
@@ -146,9 +146,13 @@ const RULES = {
       "counted positive (a bead dropped on a floor under Earth's gravity: 9.81, not -9.81); a load that pulls the " +
       "bead away from the wall is a negative force"),
   force: () => null,
+  timestep: positive("timestep"),
   target_e: (x, text) => (x >= 0.01 && x < 1 ? null : `target_e must be in [0.01, 1), got ${text}`),
   gamma0: (x) => (x >= 0 ? null : `parameter gamma0 must be >= 0, got ${cliNumber(x)}`),
 };
+
+// Fields that may stay empty: the DEM time step (empty: the continuous impact).
+const OPTIONAL = new Set(["timestep"]);
 
 // The form's values, or null with each offending field's message shown beside it.
 function readForm() {
@@ -158,7 +162,7 @@ function readForm() {
     const input = document.getElementById(id);
     const message = document.querySelector(`output.error[for="${id}"]`);
     let error = null;
-    if (active(id)) {
+    if (active(id) && !(OPTIONAL.has(id) && input.value.trim() === "")) {
       const text = input.value.trim();
       if (text === "") error = `${id} is missing`;
       else if (!DECIMAL.test(text) || !Number.isFinite(Number(text)))
@@ -228,8 +232,9 @@ function compute(api, f) {
   r.decks = [];
   if (f.bead_kind === "material" && r.targetE >= 0.01 && r.targetE < 1)
     for (const model of DEM_MODELS.filter((m) => m.law === f.law)) {
-      const deck = api.deck(model.id, r.targetE);
-      r.decks.push({model, deck, text: deck.status === 0 ? snippet(model, f, deck) + timeStepLine(r.timeScale) : null});
+      const dt = f.timestep ?? 0;
+      const deck = api.deck(model.id, r.targetE, dt);
+      r.decks.push({model, deck, text: deck.status === 0 ? snippet(model, f, deck) + timeStepLine(r.timeScale, dt) : null});
     }
   r.curves = curves(api, s, f, r);
   return r;
@@ -269,10 +274,12 @@ const BEAD_BEAD_COMMENT =
     "# like beads: calibrated for two such beads at the same e and approach speed, without load (viscor calibrates\n" +
     "# the contact you measured; if like beads rebound differently, run viscor dem --contact pair with their e)\n";
 
-// The drop decks' step: T/400 of the time scale T (include/viscor/dem/drop_deck.hpp); the
-// CLI's line also gives the contact time, which needs the solve: not here.
+// The deck's last line: the step the entries were calibrated for, or the drop decks' step,
+// T/400 of the time scale T (include/viscor/dem/drop_deck.hpp); for the latter the CLI's
+// line also gives the contact time, which needs the solve: not here.
 const STEPS_PER_TIME_SCALE = 400;
-function timeStepLine(timeScale) {
+function timeStepLine(timeScale, dt) {
+  if (dt > 0) return `# time step: timestep ${cliNumber(dt)} exactly: the entries are calibrated for this step\n`;
   const step = timeScale / STEPS_PER_TIME_SCALE;
   return `# time step: timestep ${deckNumber(Number(step.toPrecision(6)))} or smaller ` +
          `(T/${STEPS_PER_TIME_SCALE} of the time scale T = ${shown(timeScale)} s)\n`;
@@ -383,11 +390,15 @@ function showDecks(f, r) {
   box.replaceChildren();
   const note = document.getElementById("deck-note");
   if (f.bead_kind !== "material") note.textContent = "DEM codes take the bead's material: give it to see their entries.";
+  else if (!(r.targetE >= 0.01 && r.targetE < 1))
+    note.textContent = `No deck: the codes' entries are calibrated for 0.01 <= e < 1, and e = ${shown(r.targetE)}.`;
   else if (r.decks.length === 0)
     note.textContent = `No code of this export calibrates the ${f.law} law (LAMMPS velocity, mass_velocity: ` +
         "hertz_linear_damping; viscoelastic: kuwabara_kono; LAMMPS tsuji and LIGGGHTS hertz: tsuji). " +
         "YADE's laws clamp the force at zero: run viscor dem yade for them.";
-  else note.textContent = `The entries that give e = ${shown(r.targetE)} at this impact, ready to copy.`;
+  else note.textContent = `The entries that give e = ${shown(r.targetE)} at this impact, ready to copy` +
+      (f.timestep ? `, when the code steps it with dt = ${shown(f.timestep)} s (T/${(r.timeScale / f.timestep).toFixed(1)} of the time scale T).`
+                  : ", for the continuous impact (give a time step for the e the code gets at its step).");
   for (const {model, deck, text} of r.decks) {
     const section = document.createElement("section");
     section.className = "deck";
@@ -455,14 +466,15 @@ function drawPlot(series, mark) {
   for (const e of [e0, (e0 + e1) / 2, e1])
     plot.append(svg("text", {x: box.left - 6, y: y(e) + 4, "text-anchor": "end"}, e.toFixed(4)));
   plot.append(svg("text", {x: (box.left + box.right) / 2, y: 340, "text-anchor": "middle"}, "impact speed v0 (m/s)"));
-  plot.append(svg("text", {x: 14, y: (box.top + box.bottom) / 2, transform: `rotate(-90 14 ${(box.top + box.bottom) / 2})`,
-    "text-anchor": "middle"}, "e"));
+  plot.append(svg("text", {x: box.left - 6, y: box.top - 6, "text-anchor": "end"}, "e"));
   series.forEach((c, i) => {
     const colour = COLOURS[i % COLOURS.length];
     plot.append(svg("polyline", {points: c.points.map(([v, e]) => `${x(v)},${y(e)}`).join(" "), stroke: colour,
       fill: "none", "stroke-width": 2, "data-series": c.label, "data-count": c.points.length,
       "data-values": c.points.map(([v, e]) => `${deckNumber(v)}:${deckNumber(e)}`).join(" ")}));
-    plot.append(svg("text", {x: box.left + 8, y: box.top + 16 + 16 * i, fill: colour}, c.label));
+    plot.append(svg("line", {x1: box.left, x2: box.left + 24, y1: 366 + 16 * i, y2: 366 + 16 * i, stroke: colour,
+      "stroke-width": 2}));
+    plot.append(svg("text", {x: box.left + 32, y: 370 + 16 * i}, c.label));
   });
   if (mark && Number.isFinite(mark[1]))
     plot.append(svg("circle", {cx: x(mark[0]), cy: y(mark[1]), r: 6, class: "mark", "data-v0": deckNumber(mark[0]),

@@ -92,10 +92,12 @@ VISCOR_WEB void viscor_web_bound(const viscor_surrogate* s, double* out) {
     out[0] = s->bound.abs_e, out[1] = s->bound.abs_e_squared, out[2] = s->bound.rel_one_minus_e;
 }
 
-/* The deck of `model` for e_target at the material impact set: out[0] the status, then
-   the doubles of viscor_deck in their order (damping ... builtin_e). */
-VISCOR_WEB void viscor_web_deck(int model, double e_target, double* out) {
-    const viscor_deck d = viscor_dem_deck((viscor_dem_model)model, e_target, &impact);
+/* The deck of `model` for e_target at the material impact set, for the continuous impact
+   (dt 0) or the drop stepped with dt (s): out[0] the status, then the doubles of
+   viscor_deck in their order (damping ... builtin_e). */
+VISCOR_WEB void viscor_web_deck(int model, double e_target, double dt, double* out) {
+    const viscor_deck d = dt > 0 ? viscor_dem_deck_at_step((viscor_dem_model)model, e_target, &impact, dt)
+                                 : viscor_dem_deck((viscor_dem_model)model, e_target, &impact);
     const double fields[] = {d.damping, d.damping_number, d.gamma0, d.youngs_modulus, d.poisson_ratio,
                              d.wall_youngs_modulus, d.wall_poisson_ratio, d.other_youngs_modulus,
                              d.other_poisson_ratio, d.cross_youngs_modulus, d.bead_bead_youngs_modulus,
