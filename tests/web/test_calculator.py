@@ -279,6 +279,20 @@ try:
           "bad input: a result is still shown")
     type_into("youngs_modulus", "6.3e10")
     check(value_of("e") is not None, "the result does not come back once the input is fixed")
+    # Gravity pointing away from the wall: the CLI's message with the value as typed.
+    type_into("gravity", "-9.81")
+    message = driver.find_element(By.CSS_SELECTOR, 'output.error[for="gravity"]').text
+    run = cli("calibrate", *cli_inputs(dict(CASES[0], gravity="-9.81")), "--target-e", "0.83", "--method", "surrogate")
+    check(run.returncode == 2 and message and message in run.stderr,
+          f"negative gravity: the page says '{message}', the CLI (exit {run.returncode}) '{run.stderr.strip()}'")
+    check(value_of("e") is None, "negative gravity: a result is still shown")
+    type_into("gravity", "9.81")
+    # An incomplete form computes nothing.
+    type_into("v0", "")
+    check(value_of("e") is None and driver.find_element(By.CSS_SELECTOR, 'output.error[for="v0"]').text,
+          "an empty impact speed: a result is shown, or no message")
+    type_into("v0", CASES[0]["v0"])
+    check(value_of("e") is not None, "the result does not come back once v0 is given")
 
     # Keyboard: the law select and the fields are reachable and usable without a mouse.
     law = driver.find_element(By.ID, "law")
