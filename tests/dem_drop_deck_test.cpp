@@ -217,6 +217,10 @@ TEST(DemDropDeck, LiggghtsHertzStepAwareDecksHitTheTarget) {
 TEST(DemDropDeck, YadeMindlinStepAwareDecksHitTheTarget) {
   expect_step_aware_decks_hit_target("yade", "yade --damping mindlin", "-n -x");
 }
+// The C export's YADE entries: the stepped calibration from the unclamped surrogate's bracket.
+TEST(DemDropDeck, YadeMindlinStepAwareDecksBySurrogateHitTheTarget) {
+  expect_step_aware_decks_hit_target("yade", "yade --damping mindlin --method surrogate", "-n -x");
+}
 
 /// Two glass beads head-on (`--contact pair`: gravity drops out) with the entries of
 /// `viscor dem --contact pair --timestep T/N`: the real program, stepping each bead with

@@ -13,6 +13,8 @@ const DEM_MODELS = [
   {id: 2, code: "LAMMPS", name: "viscoelastic", law: "kuwabara_kono"},
   {id: 3, code: "LAMMPS", name: "tsuji", law: "tsuji", builtin: "LAMMPS damping tsuji"},
   {id: 4, code: "LIGGGHTS", name: "hertz", law: "tsuji", builtin: "LIGGGHTS model hertz"},
+  // YADE clamps the force at zero, which the surrogates do not describe: entries at a time step only
+  {id: 5, code: "YADE", name: "mindlin", law: "tsuji", builtin: "YADE Hertz-Mindlin with en (Thornton's fit)", atStepOnly: true},
 ];
 
 // viscor_deck's doubles in their order (viscor_surrogates.h), after the status.
@@ -156,7 +158,7 @@ const OPTIONAL = new Set(["timestep"]);
 
 // The form's values, or null with each offending field's message shown beside it.
 function readForm() {
-  const values = {};
+  const values = {text: {}};
   let complete = true;
   for (const id of FIELDS) {
     const input = document.getElementById(id);
@@ -171,6 +173,7 @@ function readForm() {
         const x = Number(text);
         error = RULES[id](x, text);
         values[id] = x;
+        values.text[id] = text;
       }
     }
     message.textContent = error || "";
@@ -231,10 +234,10 @@ function compute(api, f) {
   r.targetE = f.ask === "damping" ? f.target_e : r.e;
   r.decks = [];
   if (f.bead_kind === "material" && r.targetE >= 0.01 && r.targetE < 1)
-    for (const model of DEM_MODELS.filter((m) => m.law === f.law)) {
+    for (const model of DEM_MODELS.filter((m) => m.law === f.law && (!m.atStepOnly || f.timestep))) {
       const dt = f.timestep ?? 0;
       const deck = api.deck(model.id, r.targetE, dt);
-      r.decks.push({model, deck, text: deck.status === 0 ? snippet(model, f, deck) + timeStepLine(r.timeScale, dt) : null});
+      r.decks.push({model, deck, text: deck.status === 0 ? snippet(model, f, deck) + timeStepLine(model, r.timeScale, dt) : null});
     }
   r.curves = curves(api, s, f, r);
   return r;
@@ -261,7 +264,7 @@ function curves(api, s, f, r) {
   if (f.gravity !== 0 || f.force !== 0)
     along("without load", (v) => (setImpact(api, f, v, 0, 0) ? api.cor(s, r.gamma0).e : NaN));
   if (f.bead_kind === "material")
-    for (const model of DEM_MODELS.filter((m) => m.builtin && m.law === f.law))
+    for (const model of DEM_MODELS.filter((m) => m.builtin && !m.atStepOnly && m.law === f.law))
       along(`${model.builtin}'s own conversion of e = ${shown(r.targetE)}`,
           (v) => (setImpact(api, f, v, f.gravity, f.force) ? api.eForEntry(model.id, r.targetE) : NaN));
   setImpact(api, f, f.v0, f.gravity, f.force);
@@ -278,7 +281,8 @@ const BEAD_BEAD_COMMENT =
 // T/400 of the time scale T (include/viscor/dem/drop_deck.hpp); for the latter the CLI's
 // line also gives the contact time, which needs the solve: not here.
 const STEPS_PER_TIME_SCALE = 400;
-function timeStepLine(timeScale, dt) {
+function timeStepLine(model, timeScale, dt) {
+  if (dt > 0 && model.code === "YADE") return `O.dt = ${cliNumber(dt)}  # exactly: the entries are calibrated for this step\n`;
   if (dt > 0) return `# time step: timestep ${cliNumber(dt)} exactly: the entries are calibrated for this step\n`;
   const step = timeScale / STEPS_PER_TIME_SCALE;
   return `# time step: timestep ${deckNumber(Number(step.toPrecision(6)))} or smaller ` +
@@ -292,8 +296,49 @@ function snippet(model, f, deck) {
   const wall = f.partner === "rigid" || f.partner === "wall_material";
   // LIGGGHTS's rigid wall type: the CLI writes the modulus as its convention spells it.
   if (f.partner === "rigid" && deck.wall_youngs_modulus === 1e30) d.wall_youngs_modulus = "1e30";
+  if (model.code === "YADE") return yadeSnippet(f, wall, d);
   return model.code === "LAMMPS" ? lammpsSnippet(model, wall, f.partner === "wall_material", d)
                                  : liggghtsSnippet(wall, d);
+}
+
+// YADE's script names the beads' sizes, densities, speed and load: the form's texts, as the
+// CLI writes the request's.
+function yadeSnippet(f, wall, d) {
+  const wallMaterial = f.partner === "wall_material";
+  const other = f.partner === "other_bead";
+  let s = "# YADE 2023.02a, Hertz-Mindlin with viscous damping betan (the total normal force is clamped at 0)\n";
+  s += `bead = O.materials.append(FrictMat(young=${d.youngs_modulus}, poisson=${d.poisson_ratio}, density=DENSITY, frictionAngle=0))\n`;
+  if (wall) {
+    s += wallMaterial
+        ? "# a wall of its own material; YADE takes R* = R/2 on a wall, hence young = sqrt(2) E for bead and\n" +
+          "# wall: bead-wall only, two beads of these would be too stiff (for bead-bead run viscor dem --contact pair)\n"
+        : "# rigid wall; YADE takes R* = R/2 on a wall, hence the bead's young = sqrt(2) E: bead-wall only,\n" +
+          "# two beads of this material would be too stiff (for bead-bead run viscor dem --contact pair)\n";
+    s += `${wallMaterial ? "plate" : "rigid"} = O.materials.append(FrictMat(young=${d.wall_youngs_modulus ?? d.youngs_modulus}, ` +
+         `poisson=${d.wall_poisson_ratio ?? d.poisson_ratio}, density=DENSITY, frictionAngle=0))\n`;
+  } else if (other) {
+    s += `other = O.materials.append(FrictMat(young=${d.other_youngs_modulus}, poisson=${d.other_poisson_ratio ?? d.poisson_ratio}, ` +
+         "density=OTHER_DENSITY, frictionAngle=0))\n";
+  }
+  if (wall) {
+    s += `O.bodies.append([utils.wall(0, axis=2, material=${wallMaterial ? "plate" : "rigid"}), ` +
+         "utils.sphere((0, 0, RADIUS), RADIUS, material=bead)])\n";
+    s += "O.bodies[1].state.vel = (0, 0, -V0)  # the impact speed\n";
+  } else {
+    s += other ? "O.bodies.append([utils.sphere((0, 0, 0), RADIUS, material=bead), " +
+                 "utils.sphere((0, 0, RADIUS + OTHER_RADIUS), OTHER_RADIUS, material=other)])\n"
+               : "O.bodies.append([utils.sphere((0, 0, 0), RADIUS, material=bead), " +
+                 "utils.sphere((0, 0, 2 * RADIUS), RADIUS, material=bead)])\n";
+    s += "O.bodies[0].state.vel, O.bodies[1].state.vel = (0, 0, V0 / 2), (0, 0, -V0 / 2)  # approaching at V0\n";
+  }
+  s += `O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Sphere_Aabb()${wall ? ", Bo1_Wall_Aabb()" : ""}]),\n`;
+  s += `    InteractionLoop([${wall ? "Ig2_Wall_Sphere_ScGeom()" : "Ig2_Sphere_Sphere_ScGeom()"}], ` +
+       `[Ip2_FrictMat_FrictMat_MindlinPhys(betan=${d.damping})], [Law2_ScGeom_MindlinPhys_Mindlin()]),\n`;
+  s += "    NewtonIntegrator(damping=0, gravity=(0, 0, -GRAVITY))]\n";
+  const names = {OTHER_DENSITY: f.text.other_density, OTHER_RADIUS: f.text.other_radius, DENSITY: f.text.density,
+    RADIUS: f.text.radius, GRAVITY: f.text.gravity, V0: f.text.v0};
+  for (const [name, value] of Object.entries(names)) s = s.split(name).join(value ?? "");
+  return s;
 }
 
 function lammpsSnippet(model, wall, wallMaterial, d) {
@@ -396,7 +441,8 @@ function showDecks(f, r) {
     note.textContent = `No code of this export calibrates the ${f.law} law (LAMMPS velocity, mass_velocity: ` +
         "hertz_linear_damping; viscoelastic: kuwabara_kono; LAMMPS tsuji and LIGGGHTS hertz: tsuji). " +
         "YADE's laws clamp the force at zero: run viscor dem yade for them.";
-  else note.textContent = `The entries that give e = ${shown(r.targetE)} at this impact, ready to copy` +
+  else note.textContent = (f.law === "tsuji" && !f.timestep ? "YADE's Hertz-Mindlin clamps the force at zero: " +
+      "give a time step for its entries. " : "") + `The entries that give e = ${shown(r.targetE)} at this impact, ready to copy` +
       (f.timestep ? `, when the code steps it with dt = ${shown(f.timestep)} s (T/${(r.timeScale / f.timestep).toFixed(1)} of the time scale T).`
                   : ", for the continuous impact (give a time step for the e the code gets at its step).");
   for (const {model, deck, text} of r.decks) {
@@ -425,8 +471,8 @@ function showDecks(f, r) {
         const p = document.createElement("p");
         p.className = "builtin";
         p.dataset.value = deckNumber(deck.builtin_e);
-        p.textContent = `${model.builtin}'s own conversion of e = ${shown(r.targetE)} would give e = ` +
-            `${shown(deck.builtin_e)} at this impact.`;
+        p.textContent = `The code's own conversion (${model.builtin}) of e = ${shown(r.targetE)} would give ` +
+            `e = ${shown(deck.builtin_e)} at this impact${model.atStepOnly ? " and step" : ""}.`;
         section.append(p);
       }
     }

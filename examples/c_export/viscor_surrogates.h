@@ -222,7 +222,8 @@ typedef enum viscor_dem_model {
     VISCOR_LAMMPS_MASS_VELOCITY = 1, /* lammps hertz/material, damping mass_velocity (deck: damp) */
     VISCOR_LAMMPS_VISCOELASTIC = 2,  /* lammps hertz/material, damping viscoelastic (deck: damp) */
     VISCOR_LAMMPS_TSUJI = 3,         /* lammps hertz/material, damping tsuji (deck: an e) */
-    VISCOR_LIGGGHTS_HERTZ = 4        /* liggghts model hertz (deck: coefficientRestitution) */
+    VISCOR_LIGGGHTS_HERTZ = 4,       /* liggghts model hertz (deck: coefficientRestitution) */
+    VISCOR_YADE_MINDLIN = 5          /* yade Hertz-Mindlin (deck: betan; the force clamped at zero): at a time step only */
 } viscor_dem_model;
 
 /* A bead's material and size, SI. */
@@ -251,7 +252,9 @@ typedef enum viscor_deck_status {
     VISCOR_DECK_OK = 0,
     VISCOR_DECK_INVALID_INPUT = 1, /* an input out of its range (as viscor dem refuses it) */
     VISCOR_DECK_UNREACHABLE = 2,   /* no entry of the model gives e_target at this impact */
-    VISCOR_DECK_NO_SURROGATE = 3   /* the model's law is not in this export */
+    VISCOR_DECK_NO_SURROGATE = 3,  /* the model's law is not in this export */
+    VISCOR_DECK_NEEDS_TIME_STEP = 4 /* YADE clamps the force, which the surrogates do not describe:
+                                       its entries come from the stepped drop (viscor_dem_deck_at_step) */
 } viscor_deck_status;
 
 /* The numbers the code's input takes, as `viscor dem CODE --damping MODEL --method
@@ -286,19 +289,22 @@ typedef struct viscor_contact {
 viscor_contact viscor_contact_of(const viscor_dem_impact* impact);
 
 /* The deck entries that give e_target (0.01 <= e_target < 1) at this impact, the
-   calibration by the surrogate's inverse at the impact's scaled load. */
+   calibration by the surrogate's inverse at the impact's scaled load (YADE: status
+   VISCOR_DECK_NEEDS_TIME_STEP). */
 viscor_deck viscor_dem_deck(viscor_dem_model model, double e_target, const viscor_dem_impact* impact);
 /* The deck entries that give e_target when the code steps the drop with dt (s), as
-   LAMMPS's and LIGGGHTS's fix nve/sphere do (velocity Verlet), the e read as the drop
-   deck reads it: `viscor dem ... --method surrogate --timestep dt` (docs/dem.md, "The e at
-   the code's time step"); builtin_e also at that step. A few ms: for a deck, not a step. */
+   LAMMPS's and LIGGGHTS's fix nve/sphere do (velocity Verlet) or YADE's NewtonIntegrator
+   (leapfrog, the force clamped at zero), the e read as the drop deck reads it: `viscor dem
+   ... --method surrogate --timestep dt` (docs/dem.md, "The e at the code's time step");
+   builtin_e also at that step. A few ms: for a deck, not a step. */
 viscor_deck viscor_dem_deck_at_step(viscor_dem_model model, double e_target, const viscor_dem_impact* impact,
                                     double dt);
 /* The e of a deck damping entry in the drop stepped with dt (NaN for invalid inputs). */
 double viscor_dem_stepped_e(viscor_dem_model model, double deck_damping, const viscor_dem_impact* impact, double dt);
 /* The damping entry alone (NaN where viscor_dem_deck has no entries). */
 double viscor_dem_damping_entry(viscor_dem_model model, double e_target, const viscor_dem_impact* impact);
-/* The e a deck damping entry gives at this impact (NaN for an invalid entry or impact). */
+/* The e a deck damping entry gives at this impact (NaN for an invalid entry or impact, and
+   for YADE, whose clamped force only viscor_dem_stepped_e describes). */
 double viscor_dem_e_for_entry(viscor_dem_model model, double deck_damping, const viscor_dem_impact* impact);
 
 /* The laws of this export. */
@@ -313,4 +319,4 @@ extern const viscor_surrogate viscor_surrogate_hunt_crossley; /* alpha = 3/2, be
 #endif
 
 #endif /* VISCOR_SURROGATES_H */
-/* viscor sha256 95440c9254710cbb256f0f90c89602805259b4b0aad6b5e765b5a5bf58c8260c */
+/* viscor sha256 fdb9a56db8aba936cc7eef4036707c0bc53f813851e78d916fcbb5f43417e6f9 */

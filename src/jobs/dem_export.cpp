@@ -10,7 +10,9 @@
 // tests/dem_export_test.cpp compiles the export with cc and compares every entry with
 // `viscor dem --method surrogate` bit for bit, so a convention changed on one side only
 // fails there. YADE's two laws clamp the force at zero, which the surrogates (of the
-// unclamped force) do not describe: they have no entry here.
+// unclamped force) do not describe: Hertz-Mindlin has entries at a time step only (the
+// stepped calibration needs just a bracket, the unclamped surrogate's), the visco-elastic
+// law none.
 #include <viscor/jobs/dem_export.hpp>
 
 namespace viscor::jobs {
@@ -26,7 +28,8 @@ typedef enum viscor_dem_model {
     VISCOR_LAMMPS_MASS_VELOCITY = 1, /* lammps hertz/material, damping mass_velocity (deck: damp) */
     VISCOR_LAMMPS_VISCOELASTIC = 2,  /* lammps hertz/material, damping viscoelastic (deck: damp) */
     VISCOR_LAMMPS_TSUJI = 3,         /* lammps hertz/material, damping tsuji (deck: an e) */
-    VISCOR_LIGGGHTS_HERTZ = 4        /* liggghts model hertz (deck: coefficientRestitution) */
+    VISCOR_LIGGGHTS_HERTZ = 4,       /* liggghts model hertz (deck: coefficientRestitution) */
+    VISCOR_YADE_MINDLIN = 5          /* yade Hertz-Mindlin (deck: betan; the force clamped at zero): at a time step only */
 } viscor_dem_model;
 
 /* A bead's material and size, SI. */
@@ -55,7 +58,9 @@ typedef enum viscor_deck_status {
     VISCOR_DECK_OK = 0,
     VISCOR_DECK_INVALID_INPUT = 1, /* an input out of its range (as viscor dem refuses it) */
     VISCOR_DECK_UNREACHABLE = 2,   /* no entry of the model gives e_target at this impact */
-    VISCOR_DECK_NO_SURROGATE = 3   /* the model's law is not in this export */
+    VISCOR_DECK_NO_SURROGATE = 3,  /* the model's law is not in this export */
+    VISCOR_DECK_NEEDS_TIME_STEP = 4 /* YADE clamps the force, which the surrogates do not describe:
+                                       its entries come from the stepped drop (viscor_dem_deck_at_step) */
 } viscor_deck_status;
 
 /* The numbers the code's input takes, as `viscor dem CODE --damping MODEL --method
@@ -90,19 +95,22 @@ typedef struct viscor_contact {
 viscor_contact viscor_contact_of(const viscor_dem_impact* impact);
 
 /* The deck entries that give e_target (0.01 <= e_target < 1) at this impact, the
-   calibration by the surrogate's inverse at the impact's scaled load. */
+   calibration by the surrogate's inverse at the impact's scaled load (YADE: status
+   VISCOR_DECK_NEEDS_TIME_STEP). */
 viscor_deck viscor_dem_deck(viscor_dem_model model, double e_target, const viscor_dem_impact* impact);
 /* The deck entries that give e_target when the code steps the drop with dt (s), as
-   LAMMPS's and LIGGGHTS's fix nve/sphere do (velocity Verlet), the e read as the drop
-   deck reads it: `viscor dem ... --method surrogate --timestep dt` (docs/dem.md, "The e at
-   the code's time step"); builtin_e also at that step. A few ms: for a deck, not a step. */
+   LAMMPS's and LIGGGHTS's fix nve/sphere do (velocity Verlet) or YADE's NewtonIntegrator
+   (leapfrog, the force clamped at zero), the e read as the drop deck reads it: `viscor dem
+   ... --method surrogate --timestep dt` (docs/dem.md, "The e at the code's time step");
+   builtin_e also at that step. A few ms: for a deck, not a step. */
 viscor_deck viscor_dem_deck_at_step(viscor_dem_model model, double e_target, const viscor_dem_impact* impact,
                                     double dt);
 /* The e of a deck damping entry in the drop stepped with dt (NaN for invalid inputs). */
 double viscor_dem_stepped_e(viscor_dem_model model, double deck_damping, const viscor_dem_impact* impact, double dt);
 /* The damping entry alone (NaN where viscor_dem_deck has no entries). */
 double viscor_dem_damping_entry(viscor_dem_model model, double e_target, const viscor_dem_impact* impact);
-/* The e a deck damping entry gives at this impact (NaN for an invalid entry or impact). */
+/* The e a deck damping entry gives at this impact (NaN for an invalid entry or impact, and
+   for YADE, whose clamped force only viscor_dem_stepped_e describes). */
 double viscor_dem_e_for_entry(viscor_dem_model model, double deck_damping, const viscor_dem_impact* impact);
 )";
 
@@ -209,7 +217,7 @@ static const char* viscor_dk_law(viscor_dem_model model) {
     switch (model) {
     case VISCOR_LAMMPS_VELOCITY: case VISCOR_LAMMPS_MASS_VELOCITY: return "hertz_linear_damping";
     case VISCOR_LAMMPS_VISCOELASTIC: return "kuwabara_kono";
-    case VISCOR_LAMMPS_TSUJI: case VISCOR_LIGGGHTS_HERTZ: return "tsuji";
+    case VISCOR_LAMMPS_TSUJI: case VISCOR_LIGGGHTS_HERTZ: case VISCOR_YADE_MINDLIN: return "tsuji";
     }
     return 0;
 }
@@ -223,6 +231,7 @@ static double viscor_dk_damping_scale(viscor_dem_model model, const viscor_dk_co
     case VISCOR_LAMMPS_VISCOELASTIC: return 2 * m * sqrt(c->effective_radius) / (3 * k);
     case VISCOR_LAMMPS_TSUJI: return 4 * sqrt(m * k) / (5 * k);
     case VISCOR_LIGGGHTS_HERTZ: return 4 * sqrt(5.0) * sqrt(m * k) / (5 * k);
+    case VISCOR_YADE_MINDLIN: return 4 * sqrt(6.0) * sqrt(m * k) / (5 * k);
     }
     return NAN;
 }
@@ -279,8 +288,22 @@ static double viscor_dk_deck_damping_for(viscor_dem_model model, double damping)
     return damping;
 }
 
+static int viscor_dk_is_lammps(viscor_dem_model model) { return model <= VISCOR_LAMMPS_TSUJI; }
+
+/* builtin_conversions.hpp yade_thornton_betan: the betan YADE's `en` gives (Thornton et al.'s fit). */
+static double viscor_dk_thornton_betan(double e) {
+    static const double h[] = {-6.918798, -16.41105, 146.8049, -796.4559, 2928.711,
+                               -7206.864, 11494.29,  -11342.18, 6276.757, -1489.915};
+    double a = h[9];
+    int i;
+    if (e == 1) return 0;
+    for (i = 8; i >= 0; --i) a = a * e + h[i];
+    a *= e;
+    return sqrt(1 / (1 - (1 + e) * (1 + e) * exp(a)) - 1);
+}
+
 static int viscor_dk_valid_impact(viscor_dem_model model, const viscor_dem_impact* in) {
-    return in && (int)model >= 0 && (int)model <= 4 && viscor_dk_finite(in->v0) && in->v0 > 0 &&
+    return in && (int)model >= 0 && (int)model <= 5 && viscor_dk_finite(in->v0) && in->v0 > 0 &&
            viscor_dk_finite(in->gravity) && in->gravity >= 0 && viscor_dk_finite(in->force);
 }
 
@@ -327,14 +350,17 @@ static int viscor_dk_valid_entry(viscor_dem_model model, double entry) {
     return entry >= 0;
 }
 
-/* ---- the drop as LAMMPS and LIGGGHTS step it (dem/stepped_drop.hpp) ---- */
+/* ---- the drop as LAMMPS, LIGGGHTS and YADE step it (dem/stepped_drop.hpp) ---- */
 
 typedef struct viscor_dk_force_law {
     double m, k, gamma0, alpha, beta, load, v0;
+    int yade; /* YADE: leapfrog, the force clamped at zero, no force at zero overlap */
 } viscor_dk_force_law;
 
-static viscor_dk_force_law viscor_dk_force_law_of(const viscor_dk_setup* u, const viscor_dem_impact* in, double gamma0) {
+static viscor_dk_force_law viscor_dk_force_law_of(viscor_dem_model model, const viscor_dk_setup* u,
+                                                  const viscor_dem_impact* in, double gamma0) {
     viscor_dk_force_law l;
+    l.yade = model == VISCOR_YADE_MINDLIN;
     l.m = u->c.effective_mass, l.k = u->c.stiffness, l.gamma0 = gamma0;
     l.alpha = u->s->alpha, l.beta = u->s->beta;
     l.load = u->gravity + in->force / l.m;
@@ -342,12 +368,34 @@ static viscor_dk_force_law viscor_dk_force_law_of(const viscor_dk_setup* u, cons
     return l;
 }
 
-/* overlap_acceleration: the load minus F/m; the wall counts a contact from zero overlap on */
+/* overlap_acceleration: the load minus F/m; LAMMPS's wall counts a contact from zero overlap
+   on, YADE's Law2 drops it and clamps the force at zero */
 static double viscor_dk_acceleration(const viscor_dk_force_law* l, double x, double u) {
     double force;
-    if (!(x > 0) && !(x == 0)) return l->load;
+    if (!(x > 0) && !(!l->yade && x == 0)) return l->load;
     force = l->k * pow(x, l->alpha) + l->gamma0 * l->k * l->beta * pow(x, l->beta - 1) * u;
+    if (l->yade && force < 0) force = 0;
     return l->load - force / l->m;
+}
+
+/* leapfrog_drop: YADE's leapfrog from zero overlap at v0; e from the parabola through the
+   last three positions. */
+static int viscor_dk_leapfrog_drop(const viscor_dk_force_law* l, double dt, long max_steps, double* e) {
+    double x = 0, u = l->v0, x0 = 0, x1 = 0;
+    long n;
+    for (n = 0; n < max_steps; ++n) {
+        u += dt * viscor_dk_acceleration(l, x, u);
+        x0 = x1, x1 = x;
+        x += dt * u;
+        if (x > 0) continue;
+        if (n < 2 || !(x1 > 0)) continue;
+        {
+            const double a = (x - 2 * x1 + x0) / (dt * dt), b = (x - x0) / (2 * dt);
+            *e = sqrt(b * b - 2 * a * x1) / l->v0;
+            return 1;
+        }
+    }
+    return 0;
 }
 
 /* verlet_drop: velocity Verlet from zero overlap at v0; 1 and *e (the deck's fit of the last
@@ -374,6 +422,13 @@ static int viscor_dk_verlet_drop(const viscor_dk_force_law* l, double dt, long m
     return 0;
 }
 
+static int viscor_dk_verlet_drop(const viscor_dk_force_law* l, double dt, long max_steps, double* e);
+
+/* step_drop: the code's own update. */
+static int viscor_dk_step_drop(const viscor_dk_force_law* l, double dt, long max_steps, double* e) {
+    return l->yade ? viscor_dk_leapfrog_drop(l, dt, max_steps, e) : viscor_dk_verlet_drop(l, dt, max_steps, e);
+}
+
 /* stepped_drop_steps: 50 times 20 T */
 static long viscor_dk_max_steps(const viscor_dk_setup* u, const viscor_dem_impact* in, double dt) {
     return (long)(1000.0 * viscor_time_scale(u->s, u->c.effective_mass, u->c.stiffness, in->v0) / dt) + 100;
@@ -384,7 +439,7 @@ static double viscor_dk_stepped_miss(const viscor_dk_force_law* l, double gamma0
     viscor_dk_force_law at = *l;
     double e = 0;
     at.gamma0 = gamma0;
-    if (!viscor_dk_verlet_drop(&at, dt, steps, &e)) e = 0;
+    if (!viscor_dk_step_drop(&at, dt, steps, &e)) e = 0;
     return e - target;
 }
 
@@ -414,9 +469,9 @@ static double viscor_dk_calibrate_at_step(const viscor_dk_force_law* l, double c
 static double viscor_dk_stepped_e_for_entry(viscor_dem_model model, const viscor_dk_setup* u,
                                             const viscor_dem_impact* in, double entry, double dt) {
     const double gamma0 = viscor_dk_damping_number(model, entry) * viscor_dk_damping_scale(model, &u->c);
-    const viscor_dk_force_law l = viscor_dk_force_law_of(u, in, gamma0);
+    const viscor_dk_force_law l = viscor_dk_force_law_of(model, u, in, gamma0);
     double e = 0;
-    if (!viscor_dk_verlet_drop(&l, dt, viscor_dk_max_steps(u, in, dt), &e)) e = 0;
+    if (!viscor_dk_step_drop(&l, dt, viscor_dk_max_steps(u, in, dt), &e)) e = 0;
     return e;
 }
 
@@ -429,39 +484,47 @@ static viscor_deck viscor_dk_deck(viscor_dem_model model, double e_target, const
     double g;
     if (status != VISCOR_DECK_OK) return viscor_dk_no_deck(status);
     if (!(e_target >= 0.01 && e_target < 1)) return viscor_dk_no_deck(VISCOR_DECK_INVALID_INPUT);
+    if (model == VISCOR_YADE_MINDLIN && !(dt > 0)) return viscor_dk_no_deck(VISCOR_DECK_NEEDS_TIME_STEP);
     g = viscor_scaled_g(u.s, u.c.effective_mass, u.c.stiffness, in->v0, u.gravity, in->force);
     if (!(g >= u.s->g_min && g <= u.s->g_max)) return viscor_dk_no_deck(VISCOR_DECK_UNREACHABLE);
     d.gamma0 = viscor_gamma_for(u.s, e_target, g) /
                viscor_damping_scale(u.s, u.c.effective_mass, u.c.stiffness, in->v0);
     if (d.gamma0 != d.gamma0) return viscor_dk_no_deck(VISCOR_DECK_UNREACHABLE);
     if (dt > 0) {
-        const viscor_dk_force_law l = viscor_dk_force_law_of(&u, in, 0.0);
+        const viscor_dk_force_law l = viscor_dk_force_law_of(model, &u, in, 0.0);
         d.gamma0 = viscor_dk_calibrate_at_step(&l, d.gamma0, e_target, dt, viscor_dk_max_steps(&u, in, dt));
         if (d.gamma0 != d.gamma0) return viscor_dk_no_deck(VISCOR_DECK_UNREACHABLE);
     }
     d.damping_number = d.gamma0 / viscor_dk_damping_scale(model, &u.c);
     d.damping = viscor_dk_deck_damping_for(model, d.damping_number);
     if (d.damping != d.damping) return viscor_dk_no_deck(VISCOR_DECK_UNREACHABLE);
-    /* deck_convention.hpp deck_youngs_modulus; LAMMPS's wall reads only its own entry */
-    if (!in->pair && model != VISCOR_LIGGGHTS_HERTZ)
+    /* deck_convention.hpp deck_youngs_modulus; LAMMPS's wall reads only its own entry, YADE
+       takes R* = R/2 on a wall (both moduli scaled by sqrt(2)) */
+    if (!in->pair && viscor_dk_is_lammps(model))
         d.youngs_modulus = in->wall_material ? 2 * (1 - in->bead.poisson_ratio) * u.c.effective_modulus
                                              : 2 * in->bead.youngs_modulus / (1 + in->bead.poisson_ratio);
+    else if (!in->pair && model == VISCOR_YADE_MINDLIN)
+        d.youngs_modulus = sqrt(2.0) * in->bead.youngs_modulus;
     else
         d.youngs_modulus = in->bead.youngs_modulus;
     d.poisson_ratio = in->bead.poisson_ratio;
-    if (model == VISCOR_LIGGGHTS_HERTZ && !in->pair) { /* wall_deck_modulus: the wall type's own */
-        d.wall_youngs_modulus = in->wall_material ? in->wall_youngs_modulus : 1e30;
+    if (!viscor_dk_is_lammps(model) && !in->pair) { /* wall_deck_modulus: the wall type's or material's own */
+        d.wall_youngs_modulus = !in->wall_material              ? 1e30
+                                : model == VISCOR_YADE_MINDLIN ? sqrt(2.0) * in->wall_youngs_modulus
+                                                               : in->wall_youngs_modulus;
         if (in->wall_material) d.wall_poisson_ratio = in->wall_poisson_ratio;
     }
     if (in->pair && in->other_material) {
         d.other_youngs_modulus = in->other.youngs_modulus;
         d.other_poisson_ratio = in->other.poisson_ratio;
-        if (model != VISCOR_LIGGGHTS_HERTZ) /* lammps_cross_modulus */
+        if (viscor_dk_is_lammps(model)) /* lammps_cross_modulus */
             d.cross_youngs_modulus = 2 * (1 - d.poisson_ratio * d.poisson_ratio) * u.c.effective_modulus;
     }
     if (model == VISCOR_LAMMPS_TSUJI || model == VISCOR_LIGGGHTS_HERTZ)
         d.builtin_e = dt > 0 ? viscor_dk_stepped_e_for_entry(model, &u, in, e_target, dt)
                              : viscor_dk_e_for_entry(model, &u, in, e_target);
+    if (model == VISCOR_YADE_MINDLIN) /* the deck's `en` instead of betan, at the step */
+        d.builtin_e = viscor_dk_stepped_e_for_entry(model, &u, in, viscor_dk_thornton_betan(e_target), dt);
     return d;
 }
 
@@ -479,7 +542,8 @@ static viscor_deck viscor_dk_full_deck(viscor_dem_model model, double e_target, 
                                        double dt) {
     viscor_deck d = viscor_dk_deck(model, e_target, impact, dt);
     if (d.status != VISCOR_DECK_OK) return d;
-    if (!impact->pair || impact->other_material) { /* deck_entries.hpp: the like-bead entries read apart */
+    if (model != VISCOR_YADE_MINDLIN && (!impact->pair || impact->other_material)) {
+        /* deck_entries.hpp: the like-bead entries LAMMPS and LIGGGHTS read apart */
         const viscor_dem_impact like = viscor_dk_like_beads(impact, &impact->bead);
         const viscor_deck b = viscor_dk_deck(model, e_target, &like, dt);
         if (b.status != VISCOR_DECK_OK) return viscor_dk_no_deck(b.status);
@@ -534,8 +598,9 @@ double viscor_dem_damping_entry(viscor_dem_model model, double e_target, const v
 
 double viscor_dem_e_for_entry(viscor_dem_model model, double deck_damping, const viscor_dem_impact* impact) {
     viscor_dk_setup u;
-    if (viscor_dk_set_up(model, impact, &u) != VISCOR_DECK_OK || !viscor_dk_valid_entry(model, deck_damping))
-        return NAN;
+    if (model == VISCOR_YADE_MINDLIN || viscor_dk_set_up(model, impact, &u) != VISCOR_DECK_OK ||
+        !viscor_dk_valid_entry(model, deck_damping))
+        return NAN; /* YADE's clamped force: viscor_dem_stepped_e */
     return viscor_dk_e_for_entry(model, &u, impact, deck_damping);
 }
 )";

@@ -191,8 +191,9 @@ struct dem_job : dem_request {
     if (method == "surrogate") {
       if constexpr (std::is_same_v<Real, double>) {
         const surrogate::cor_surrogate& s = surrogate_of(model);
+        // a model that clamps (with --timestep only): the unclamped deck, the stepped calibration's bracket
         continuous = [&s](const dem::dem_model& m, const dem::dem_impact<Real>& i, const Real& e) {
-          return dem::dem_deck_by_surrogate(m, i, e, s);
+          return m.clamped ? dem::unclamped_deck_by_surrogate(m, i, e, s) : dem::dem_deck_by_surrogate(m, i, e, s);
         };
         out.surrogate_bound = s.bound;
       }
@@ -269,11 +270,15 @@ struct dem_job : dem_request {
                                      [&](const dem::dem_model& m, const dem::dem_impact<Real>& i, const Real& e) {
                                        return dem::dem_deck_at_time_step(m, i, e, dt, continuous(m, i, e));
                                      });
+    // What the continuous calibration's entry gives at this step: of a model that clamps, by
+    // the solve (the surrogate's deck above is only the bracket of the unclamped force).
+    const dem::dem_deck<Real> reported =
+        method == "surrogate" && model.clamped ? dem::dem_deck_for(model, impact, target, calibration_options<Real>{}) : c;
     dem_forward::at_time_step s;
     s.time_step = working_number::of(dt);
     s.e = working_number::of(d.calibration.scaled.e);
-    s.continuous_damping = dem::deck_number(c.damping);
-    s.continuous_e = working_number::of(dem::stepped_e_for_deck(model, impact, c, c.damping, dt));
+    s.continuous_damping = dem::deck_number(reported.damping);
+    s.continuous_e = working_number::of(dem::stepped_e_for_deck(model, impact, reported, reported.damping, dt));
     out.stepped = s;
     return dt;
   }
@@ -306,7 +311,9 @@ struct dem_job : dem_request {
     if (digits > 15)
       throw invalid_parameter(VISCOR_FIELD("method") " surrogate computes in double: " VISCOR_FIELD("digits")
                               " must be at most 15, got " + std::to_string(digits));
-    dem::require_surrogate_model(model);
+    // A model that clamps has a step-aware deck by the surrogate: the stepped calibration
+    // needs only a bracket, which the surrogate of the unclamped force gives.
+    if (timestep.empty()) dem::require_surrogate_model(model);
   }
 
   /// --variables: LAMMPS and LIGGGHTS only (a YADE script asks viscor itself), forward only.

@@ -13,13 +13,15 @@
 
 namespace viscor::dem {
 
-/// Refuses a model the surrogates do not describe: the clamped force of YADE's laws.
+/// Refuses a model the surrogates do not describe, the clamped force of YADE's laws, for
+/// the continuous deck (the step-aware one needs only the unclamped bracket).
 inline void require_surrogate_model(const dem_model& model) {
   if (model.clamped)
     throw invalid_parameter(VISCOR_FIELD("method") " surrogate: " + std::string(model.code_name) + " " +
                             std::string(model.damping_name) +
                             " clamps the contact force at zero, which the committed surrogates (of the unclamped "
-                            "force) do not describe: use " VISCOR_FIELD("method") " solve");
+                            "force) do not describe: use " VISCOR_FIELD("method") " solve, or give "
+                            VISCOR_FIELD("timestep") " for the deck at the code's time step");
 }
 
 /// The scaled factors of the impact: gamma / gamma0, g and T, as core/scaling.hpp computes them.
@@ -29,11 +31,12 @@ inline scaled_parameters<double> surrogate_scaling(const dem_model& model, const
   return to_scaled(law_of(model), unit);
 }
 
-/// The deck that reproduces target_e (in [0.01, 1)) at this impact by the surrogate's
-/// inverse; unreachable_target when no gamma of the surrogate's domain gives it.
-inline dem_deck<double> dem_deck_by_surrogate(const dem_model& model, const dem_impact<double>& impact,
-                                              double target_e, const surrogate::cor_surrogate& s) {
-  require_surrogate_model(model);
+/// The deck of the model's law with the force unclamped, by the surrogate's inverse, for
+/// any model: of a model that clamps (YADE's Hertz-Mindlin) not its deck, only the bracket
+/// its stepped calibration starts from (calibrate_at_time_step doubles it until it holds),
+/// which the C export can compute too. dem_deck_by_surrogate for the models it describes.
+inline dem_deck<double> unclamped_deck_by_surrogate(const dem_model& model, const dem_impact<double>& impact,
+                                                    double target_e, const surrogate::cor_surrogate& s) {
   check_deck_request(impact, target_e);
   if (!(target_e >= 0.01))
     throw invalid_parameter(VISCOR_FIELD("method") " surrogate: " VISCOR_FIELD("target_e") " must be in [0.01, 1), got " +
@@ -67,6 +70,14 @@ inline dem_deck<double> dem_deck_by_surrogate(const dem_model& model, const dem_
   });
   if (d.builtin_e && std::isnan(*d.builtin_e)) d.builtin_e.reset();
   return d;
+}
+
+/// The deck that reproduces target_e (in [0.01, 1)) at this impact by the surrogate's
+/// inverse; unreachable_target when no gamma of the surrogate's domain gives it.
+inline dem_deck<double> dem_deck_by_surrogate(const dem_model& model, const dem_impact<double>& impact,
+                                              double target_e, const surrogate::cor_surrogate& s) {
+  require_surrogate_model(model);
+  return unclamped_deck_by_surrogate(model, impact, target_e, s);
 }
 
 }  // namespace viscor::dem
