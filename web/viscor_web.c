@@ -48,7 +48,6 @@ VISCOR_WEB void viscor_web_set_bead_impact(double m, double k, double v0, double
 
 VISCOR_WEB double viscor_web_mass(void) { return contact.mass; }
 VISCOR_WEB double viscor_web_stiffness(void) { return contact.stiffness; }
-VISCOR_WEB double viscor_web_gravity(void) { return contact.gravity; }
 
 /* The surrogate of the law called `law`, or 0. */
 VISCOR_WEB const viscor_surrogate* viscor_web_law(const char* law) { return viscor_surrogate_named(law); }
