@@ -9,6 +9,10 @@
 //     (items_per_second is its inverse).
 //   BM_library_gamma_for/<law>, BM_exported_c_gamma_for/<law>: the inverse on the 1024
 //     (e, g) of surrogate_bench's BM_gamma_for.
+//   BM_exported_c_cor_physical/<law>, BM_exported_c_damping_for/<law>: the physical entry
+//     points (viscor_cor_physical; viscor_damping_for, a target e -> gamma0) on the 1024
+//     impacts below (m* and k from viscor_contact_of), each with the damping that gives
+//     its target, so cor_physical meets the rebounds a deck is calibrated for.
 //   BM_exported_c_damping_entry/<model>, BM_exported_c_dem_deck/<model>: each DEM code's
 //     entries (viscor_dem_damping_entry; viscor_dem_deck with the like-bead entries) on
 //     1024 impacts: rigid walls, steel to polymer beads of 0.1-20 mm at 1 mm/s to 5 m/s,
@@ -121,6 +125,37 @@ void BM_exported_c_dem(benchmark::State& state, int model, bool whole_deck) {
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * inputs.size()));
 }
 
+// viscor_cor_physical and viscor_damping_for on the impacts of dem_inputs.
+struct physical_input {
+  double m, k, v0, gravity, target, gamma0;
+};
+
+std::vector<physical_input> physical_inputs(const viscor_surrogate* s) {
+  std::vector<physical_input> out;
+  for (const auto& d : dem_inputs()) {
+    const viscor_contact c = viscor_contact_of(&d.impact);
+    physical_input p{c.mass, c.stiffness, d.impact.v0, c.gravity, d.target, 0};
+    p.gamma0 = viscor_damping_for(s, p.target, p.m, p.k, p.v0, p.gravity, 0);
+    if (std::isnan(p.gamma0)) p.gamma0 = 0;  // outside the surrogate's domain: timed as it is refused
+    out.push_back(p);
+  }
+  return out;
+}
+
+void BM_exported_c_physical(benchmark::State& state, const std::string& law, bool inverse) {
+  const viscor_surrogate* s = viscor_surrogate_named(law.c_str());
+  if (!s) return state.SkipWithError("law not in the export");
+  const auto inputs = physical_inputs(s);
+  for (auto _ : state)
+    for (const auto& p : inputs)
+      benchmark::DoNotOptimize(inverse ? viscor_damping_for(s, p.target, p.m, p.k, p.v0, p.gravity, 0)
+                                       : viscor_cor_physical(s, p.m, p.k, p.gamma0, p.v0, p.gravity, 0).e);
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * inputs.size()));
+  // seconds per call, printed with its SI prefix (e.g. 140n)
+  state.counters["per_call"] = benchmark::Counter(static_cast<double>(inputs.size()),
+                                                  benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+
 const int registered = [] {
   const std::pair<int, const char*> models[] = {{VISCOR_LAMMPS_VELOCITY, "lammps_velocity"},
                                                 {VISCOR_LAMMPS_MASS_VELOCITY, "lammps_mass_velocity"},
@@ -141,6 +176,10 @@ const int registered = [] {
       benchmark::RegisterBenchmark(("BM_exported_c" + suffix).c_str(), BM_exported_c, std::string(law), rebound_only)
           ->Unit(benchmark::kMicrosecond);
     }
+    benchmark::RegisterBenchmark((std::string("BM_exported_c_cor_physical/") + law).c_str(), BM_exported_c_physical,
+                                 std::string(law), false)->Unit(benchmark::kMicrosecond);
+    benchmark::RegisterBenchmark((std::string("BM_exported_c_damping_for/") + law).c_str(), BM_exported_c_physical,
+                                 std::string(law), true)->Unit(benchmark::kMicrosecond);
     benchmark::RegisterBenchmark((std::string("BM_library_gamma_for/") + law).c_str(), BM_library_gamma_for,
                                  std::string(law))->Unit(benchmark::kMicrosecond);
     benchmark::RegisterBenchmark((std::string("BM_exported_c_gamma_for/") + law).c_str(), BM_exported_c_gamma_for,

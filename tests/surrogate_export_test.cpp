@@ -6,6 +6,10 @@
 // outcome and values within the stated bound at every committed verification point
 // of every law (the worst difference and the count of bit-identical values printed).
 #include <viscor/jobs/surrogate_export.hpp>
+#include <viscor/core/sha256.hpp>
+#include <viscor/jobs/files.hpp>
+#include <viscor/jobs/surrogate_files.hpp>
+#include <viscor/surrogate/cor_surrogate.hpp>
 #include <viscor/core/scaling.hpp>
 
 #include "required_dependencies.hpp"
@@ -48,13 +52,17 @@ bool have(const std::string& program) {
   return std::system(("command -v " + program + " > /dev/null 2>&1").c_str()) == 0;
 }
 
+std::string file_text(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
 // Runs `command`; its exit status and what it printed (stdout and stderr).
 std::pair<int, std::string> run(const std::string& command, const fs::path& log) {
   const int status = std::system((command + " > '" + log.string() + "' 2>&1").c_str());
-  std::ifstream in(log);
-  std::stringstream s;
-  s << in.rdbuf();
-  return {status, s.str()};
+  return {status, file_text(log)};
 }
 
 std::vector<viscor::jobs::exported_file> export_all() {
@@ -426,6 +434,26 @@ TEST(SurrogateExport, CompiledWithCcAgreesWithTheLibrary) {
                 physical_diff[law].identical, physical_diff[law].total, physical_diff[law].diff,
                 damping_diff[law].identical, damping_diff[law].total, damping_diff[law].diff, damping_diff[law].both_nan);
   std::printf("  (%zu rebounds among the verification points)\n", rebounds);
+
+  // The same answers, bit for bit, from the export's portable copy (no run-time choice
+  // of the FMA path) and in GNU C (-std=gnu99, where GCC fuses a * b + c into an fma on
+  // its own when the target has one: a product-plus-sum written outside fma() in the
+  // FMA copy would differ here).
+  const std::string dispatched = file_text(dir / "answers.txt");
+  ASSERT_GT(dispatched.size(), requests.size());
+  for (const auto& [name, flags] : {std::pair<std::string, std::string>{"portable", "-std=c99 -DVISCOR_SG_NO_DISPATCH"},
+                                    {"gnu", "-std=gnu99"}}) {
+    const std::string program = "check_driver_" + name;
+    const std::string compile_and_run = "(cd '" + dir.string() + "' && cc " + flags + " -O2 check_driver.c viscor_surrogates.c -lm -o " +
+                                        program + " && ./" + program + " < requests.txt > " + program + ".answers)";
+    const auto [status, output] = run(compile_and_run, dir / (program + ".log"));
+    ASSERT_EQ(status, 0) << compile_and_run << "\n" << output;
+    EXPECT_TRUE(file_text(dir / (program + ".answers")) == dispatched) << name << " (" << flags << ") differs from cc -std=c99 -O2";
+  }
+#if (defined(__x86_64__) || defined(__i386__)) && (defined(__GNUC__) || defined(__clang__))
+  std::printf("  the same bits from the portable copy and from -std=gnu99; this CPU %s the FMA copy\n",
+              __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") ? "takes" : "does not have");
+#endif
 }
 
 }  // namespace

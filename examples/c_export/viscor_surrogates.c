@@ -114,7 +114,28 @@
    expression; each fma is exactly rounded, with or without an FMA instruction. A
    compiler that contracts a * b + c across statements (GCC's -ffp-contract=fast, its
    default in GNU modes where the target has FMA) could change the last bits; ISO C
-   modes (-std=c99) and Clang's default do not. */
+   modes (-std=c99) and Clang's default do not.
+
+   The FMA instruction without -mfma: compiled for the x86-64 baseline, every fma() is
+   a call into libm, most of the cost of an evaluation. With GCC or Clang on x86 the
+   evaluation and the inverse are therefore compiled twice, once for AVX2 + FMA, and
+   the CPU chooses at run time (as viscor's cor_surrogate does); the helpers are forced
+   inline so that each copy is compiled for its caller's target. fma is exactly rounded
+   either way: both copies give the same bits. Define VISCOR_SG_NO_DISPATCH for one
+   portable copy. */
+#if (defined(__x86_64__) || defined(__i386__)) && (defined(__GNUC__) || defined(__clang__)) && \
+    !defined(_MSC_VER) && !defined(__FMA__) && !defined(VISCOR_SG_NO_DISPATCH)
+#define VISCOR_SG_DISPATCH 1
+#define VISCOR_SG_INLINE static __inline__ __attribute__((always_inline))
+#define VISCOR_SG_FMA_TARGET __attribute__((target("avx2,fma")))
+static int viscor_sg_cpu_has_fma(void) {
+    __builtin_cpu_init(); /* idempotent; needed when called before the constructors have run */
+    return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+}
+#else
+#define VISCOR_SG_DISPATCH 0
+#define VISCOR_SG_INLINE static
+#endif
 
 #define VISCOR_SG_MAX_ORDER 64
 
@@ -124,7 +145,7 @@ static int viscor_sg_names_equal(const char* a, const char* b) {
 }
 
 /* sum_{j < n} c[j] T_j(x) by Clenshaw's recurrence (chebyshev.hpp, clenshaw). */
-static double viscor_sg_clenshaw(const double* c, int n, double x) {
+VISCOR_SG_INLINE double viscor_sg_clenshaw(const double* c, int n, double x) {
     const double two_x = 2 * x;
     double b1 = 0, b2 = 0;
     int j;
@@ -138,7 +159,7 @@ static double viscor_sg_clenshaw(const double* c, int n, double x) {
 
 /* sum_{i, j < n} t[j n + i] T_i(x) T_j(y): n sums in y, then one in x
    (chebyshev.hpp, clenshaw_2d_by_columns: the same operations per row). */
-static double viscor_sg_clenshaw_2d(const double* t, int n, double x, double y) {
+VISCOR_SG_INLINE double viscor_sg_clenshaw_2d(const double* t, int n, double x, double y) {
     double a[VISCOR_SG_MAX_ORDER], b1[VISCOR_SG_MAX_ORDER], b2[VISCOR_SG_MAX_ORDER];
     const double two_y = 2 * y;
     int i, j;
@@ -154,7 +175,7 @@ static double viscor_sg_clenshaw_2d(const double* t, int n, double x, double y) 
 }
 
 /* The patch that holds (x, y): the walk down the k-d tree (patch_tree::walk). */
-static int viscor_sg_locate(const viscor_sg_tree* t, double x, double y) {
+VISCOR_SG_INLINE int viscor_sg_locate(const viscor_sg_tree* t, double x, double y) {
     int i = 0;
     while (t->nodes[i].dim != 2) {
         const viscor_sg_node* n = &t->nodes[i];
@@ -165,7 +186,7 @@ static int viscor_sg_locate(const viscor_sg_tree* t, double x, double y) {
 }
 
 /* The interpolant at (x, y) in the box (patch_tree::value). */
-static double viscor_sg_tree_value(const viscor_sg_tree* t, double x, double y) {
+VISCOR_SG_INLINE double viscor_sg_tree_value(const viscor_sg_tree* t, double x, double y) {
     const int p = viscor_sg_locate(t, x, y), n = t->order;
     const viscor_sg_patch* q = &t->patches[p];
     const double* c = t->coefficients + (long)p * n * n;
@@ -175,7 +196,7 @@ static double viscor_sg_tree_value(const viscor_sg_tree* t, double x, double y) 
 }
 
 /* h(x) = ln gamma_c + power ln g at x = ln g (patch_line). */
-static double viscor_sg_threshold_line(const viscor_surrogate* s, double x) {
+VISCOR_SG_INLINE double viscor_sg_threshold_line(const viscor_surrogate* s, double x) {
     int k = 0, m;
     double a, b;
     for (m = 1; m <= s->threshold_breaks - 2; ++m) k += x >= s->threshold_break[m] ? 1 : 0;
@@ -185,19 +206,19 @@ static double viscor_sg_threshold_line(const viscor_surrogate* s, double x) {
 }
 
 /* gamma_c(g) given x = ln g (cor_surrogate::critical_gamma_at). */
-static double viscor_sg_critical_gamma_at(const viscor_surrogate* s, double g, double x) {
+VISCOR_SG_INLINE double viscor_sg_critical_gamma_at(const viscor_surrogate* s, double g, double x) {
     const double h = exp(viscor_sg_threshold_line(s, x));
     return s->threshold_power == 0 ? h : h * pow(g, -s->threshold_power);
 }
 
-static viscor_cor viscor_sg_stick(double e_squared) {
+VISCOR_SG_INLINE viscor_cor viscor_sg_stick(double e_squared) {
     viscor_cor v;
     v.outcome = VISCOR_STICK;
     v.e = 0, v.one_minus_e = 1, v.e_squared = e_squared;
     return v;
 }
 
-viscor_cor viscor_cor_at(const viscor_surrogate* s, double gamma, double g) {
+VISCOR_SG_INLINE viscor_cor viscor_sg_cor_at(const viscor_surrogate* s, double gamma, double g) {
     viscor_cor v;
     double w = gamma, G, dissipated;
     if (!s || !(gamma >= 0 && gamma <= s->gamma_max && g >= s->g_min && g <= s->g_max)) { /* also NaN */
@@ -221,6 +242,19 @@ viscor_cor viscor_cor_at(const viscor_surrogate* s, double gamma, double g) {
     v.e = sqrt(v.e_squared);
     v.one_minus_e = dissipated / (1 + v.e);
     return v;
+}
+
+#if VISCOR_SG_DISPATCH
+VISCOR_SG_FMA_TARGET static viscor_cor viscor_sg_cor_at_fma(const viscor_surrogate* s, double gamma, double g) {
+    return viscor_sg_cor_at(s, gamma, g);
+}
+#endif
+
+viscor_cor viscor_cor_at(const viscor_surrogate* s, double gamma, double g) {
+#if VISCOR_SG_DISPATCH
+    if (viscor_sg_cpu_has_fma()) return viscor_sg_cor_at_fma(s, gamma, g);
+#endif
+    return viscor_sg_cor_at(s, gamma, g);
 }
 
 double viscor_e(const viscor_surrogate* s, double gamma, double g) { return viscor_cor_at(s, gamma, g).e; }
@@ -250,7 +284,7 @@ typedef struct viscor_sg_slice {
     double a[VISCOR_SG_MAX_ORDER];
 } viscor_sg_slice;
 
-static void viscor_sg_slice_build(viscor_sg_slice* sl, const viscor_sg_tree* tree, int x_free, double fixed, double z) {
+VISCOR_SG_INLINE void viscor_sg_slice_build(viscor_sg_slice* sl, const viscor_sg_tree* tree, int x_free, double fixed, double z) {
     const viscor_sg_patch* q;
     const double* coef;
     double T[VISCOR_SG_MAX_ORDER], u;
@@ -277,7 +311,7 @@ static void viscor_sg_slice_build(viscor_sg_slice* sl, const viscor_sg_tree* tre
 }
 
 /* G and dG/dz at z (Clenshaw with its derivative). */
-static void viscor_sg_slice_value(const viscor_sg_slice* sl, double z, double* G, double* dG) {
+VISCOR_SG_INLINE void viscor_sg_slice_value(const viscor_sg_slice* sl, double z, double* G, double* dG) {
     const double t = (z - sl->c) * sl->s, two_t = 2 * t;
     double b1 = 0, b2 = 0, d1 = 0, d2 = 0;
     int k;
@@ -292,7 +326,7 @@ static void viscor_sg_slice_value(const viscor_sg_slice* sl, double z, double* G
 
 /* f(w) = w G(w) - D on the line of fixed coordinate `fixed`, and *df = f'(w); z = w
    (low loads, x_free) or z = sqrt(1 - w) (high loads). */
-static double viscor_sg_residual(const viscor_sg_tree* tree, int x_free, double fixed, double D, viscor_sg_slice* sl,
+VISCOR_SG_INLINE double viscor_sg_residual(const viscor_sg_tree* tree, int x_free, double fixed, double D, viscor_sg_slice* sl,
                                  double w, double* df) {
     const double z = x_free ? w : sqrt(1 - w);
     const double lo = x_free ? tree->x0 : tree->y0, hi = x_free ? tree->x1 : tree->y1;
@@ -307,7 +341,7 @@ static double viscor_sg_residual(const viscor_sg_tree* tree, int x_free, double 
 }
 
 /* The w in [0, b] with w G(w) = D: Newton inside a shrinking bracket. NaN if b G(b) < D. */
-static double viscor_sg_solve(const viscor_sg_tree* tree, int x_free, double fixed, double D, double b) {
+VISCOR_SG_INLINE double viscor_sg_solve(const viscor_sg_tree* tree, int x_free, double fixed, double D, double b) {
     const double eps = DBL_EPSILON;
     viscor_sg_slice sl;
     double df = 0, neg = 0, pos = b, w, q;
@@ -331,7 +365,7 @@ static double viscor_sg_solve(const viscor_sg_tree* tree, int x_free, double fix
     return w;
 }
 
-double viscor_gamma_for(const viscor_surrogate* s, double e_target, double g) {
+VISCOR_SG_INLINE double viscor_sg_gamma_for(const viscor_surrogate* s, double e_target, double g) {
     double dissipated, x, gc, top;
     if (!s || !(e_target >= 0.01 && e_target < 1) || !(g >= s->g_min && g <= s->g_max)) return NAN;
     dissipated = (1 - e_target) * (1 + e_target);
@@ -341,6 +375,19 @@ double viscor_gamma_for(const viscor_surrogate* s, double e_target, double g) {
     gc = viscor_sg_critical_gamma_at(s, g, x);
     top = s->gamma_max / gc;
     return viscor_sg_solve(&s->high_load, 0, x, dissipated, top < 1.0 ? top : 1.0) * gc;
+}
+
+#if VISCOR_SG_DISPATCH
+VISCOR_SG_FMA_TARGET static double viscor_sg_gamma_for_fma(const viscor_surrogate* s, double e_target, double g) {
+    return viscor_sg_gamma_for(s, e_target, g);
+}
+#endif
+
+double viscor_gamma_for(const viscor_surrogate* s, double e_target, double g) {
+#if VISCOR_SG_DISPATCH
+    if (viscor_sg_cpu_has_fma()) return viscor_sg_gamma_for_fma(s, e_target, g);
+#endif
+    return viscor_sg_gamma_for(s, e_target, g);
 }
 
 /* ---- physical variables (core/scaling.hpp: the same expressions) ---- */
@@ -8750,4 +8797,4 @@ const viscor_surrogate* viscor_surrogate_named(const char* law) {
     if (law && viscor_sg_names_equal(law, "hunt_crossley")) return &viscor_surrogate_hunt_crossley;
     return 0;
 }
-/* viscor sha256 16695ed5cbe2abac4a944bf05e3620c32b05698cb7ebb45d2d45ac9cd64345d1 */
+/* viscor sha256 21158426c8df5b10e209886920fc1ffedc8fb69dc9d50add7276416ed9fd77ed */
