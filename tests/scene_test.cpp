@@ -6,9 +6,14 @@
 
 #include <viscor/exact/exact_solutions.hpp>
 #include <viscor/certify/extern_templates.hpp>
+#include <viscor/dem/hertz_contact.hpp>
+#include <viscor/jobs/physical_inputs.hpp>
 #include <viscor/scenes/scene.hpp>
 
 #include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -46,6 +51,60 @@ TEST(scene, hertz_stiffness_and_mass_from_materials) {
   EXPECT_PRED_FORMAT3(relative_close<mpfr_50>, r50.stiffness, mpfr_50(4 * e_star * sqrt(mpfr_50("4e-3")) / 3),
                       mpfr_50(1e-48));
 #endif
+}
+
+// One contact from materials in every command: a scene, `viscor cor`/`calibrate`
+// (jobs/physical_inputs.hpp bead_of_material) and the DEM decks (make_hertz_contact)
+// give the same m* and k to the last bit (they once took three orders of operations).
+TEST(scene, every_command_takes_the_same_contact_from_materials) {
+  std::mt19937_64 rng(54);
+  auto uniform = [&](double a, double b) { return a + (b - a) * static_cast<double>(rng() >> 11) * 0x1.0p-53; };
+  auto log_uniform = [&](double a, double b) { return std::exp(uniform(std::log(a), std::log(b))); };
+  auto text = [](double x) {
+    char b[40];
+    std::snprintf(b, sizeof b, "%.17g", x);
+    return std::string(b);
+  };
+  auto bits_equal = [](double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; };
+  const contact_law law = law_by_name("tsuji");
+  int compared = 0, differences = 0;
+  for (int n = 0; n < 4000; ++n) {
+    const dem::bead_material<double> bead{log_uniform(1e6, 3e11), uniform(-0.5, 0.5), log_uniform(1e-5, 1e-1),
+                                          uniform(500, 20000)};
+    const dem::bead_material<double> other{log_uniform(1e6, 3e11), uniform(-0.5, 0.5), log_uniform(1e-5, 1e-1),
+                                           uniform(500, 20000)};
+    const elastic_material<double> wall{log_uniform(1e6, 3e11), uniform(-0.5, 0.5)};
+    const dem::contact_kind kind = n % 4 < 2 ? dem::contact_kind::wall : dem::contact_kind::pair;
+    dem::contact_partner<double> partner;
+    if (n % 4 == 1) partner.wall = wall;
+    if (n % 4 == 3) partner.other = other;
+    const dem::hertz_contact<double> deck = dem::make_hertz_contact(bead, kind, partner);
+    const auto [m, k] = jobs::bead_of_material<double>(law, bead.youngs_modulus, bead.poisson_ratio, bead.radius,
+                                                       std::nullopt, bead.density, kind, partner);
+    scene_description d;
+    d.law = law;
+    d.density = text(bead.density), d.radius = text(bead.radius);
+    d.youngs_modulus = text(bead.youngs_modulus), d.poisson_ratio = text(bead.poisson_ratio);
+    if (partner.wall) d.wall_youngs_modulus = text(wall.youngs_modulus), d.wall_poisson_ratio = text(wall.poisson_ratio);
+    d.pair = kind == dem::contact_kind::pair;
+    if (partner.other) {
+      d.other_density = text(other.density), d.other_radius = text(other.radius);
+      d.other_youngs_modulus = text(other.youngs_modulus), d.other_poisson_ratio = text(other.poisson_ratio);
+    }
+    d.gamma0 = "0";
+    d.velocities = {"1"};
+    d.tolerance = "1e-6";
+    const resolved_scene<double> scene = resolve_scene<double>(d);
+    ++compared;
+    if (!bits_equal(m, deck.effective_mass) || !bits_equal(k, deck.stiffness) || !bits_equal(scene.mass, deck.effective_mass) ||
+        !bits_equal(scene.stiffness, deck.stiffness)) {
+      if (++differences <= 5)
+        ADD_FAILURE() << "case " << n << " (kind " << n % 4 << "): deck m* " << deck.effective_mass << " k "
+                      << deck.stiffness << ", cor " << m << " " << k << ", scene " << scene.mass << " " << scene.stiffness;
+    }
+  }
+  EXPECT_EQ(compared, 4000);
+  EXPECT_EQ(differences, 0);
 }
 
 TEST(scene, resolution_errors_name_the_field) {

@@ -505,41 +505,6 @@ static int viscor_dk_make_contact(const viscor_dem_impact* in, viscor_dk_contact
            viscor_dk_representable(c->stiffness);
 }
 
-/* jobs/physical_inputs.hpp bead_of_material, the contact `viscor cor` and `viscor calibrate`
-   take from materials: the quantities of viscor_dk_make_contact in that function's order
-   of operations (core/elastic_contact.hpp sphere_mass, E* as the inverse of the summed
-   compliances), which differs from the DEM job's in the last bit. */
-static double viscor_dk_compliance(double youngs_modulus, double poisson_ratio) {
-    return (1 - poisson_ratio * poisson_ratio) / youngs_modulus;
-}
-
-static int viscor_dk_cor_contact(const viscor_dem_impact* in, viscor_dk_contact* c) {
-    const viscor_bead* b = &in->bead;
-    const double mass = 4 * viscor_dk_pi * b->density * b->radius * b->radius * b->radius / 3;
-    double compliance;
-    if (!viscor_dk_valid_bead(b)) return 0;
-    compliance = viscor_dk_compliance(b->youngs_modulus, b->poisson_ratio);
-    if (!in->pair) {
-        if (in->wall_material) {
-            if (!viscor_dk_valid_wall(in)) return 0;
-            compliance += viscor_dk_compliance(in->wall_youngs_modulus, in->wall_poisson_ratio);
-        }
-        c->effective_radius = b->radius;
-        c->effective_mass = mass;
-    } else {
-        const viscor_bead* o = in->other_material ? &in->other : b;
-        const double other_mass = in->other_material ? viscor_dk_mass(o) : mass;
-        if (!viscor_dk_valid_bead(o)) return 0;
-        compliance += viscor_dk_compliance(o->youngs_modulus, o->poisson_ratio);
-        c->effective_radius = b->radius * o->radius / (b->radius + o->radius);
-        c->effective_mass = mass * other_mass / (mass + other_mass);
-    }
-    c->effective_modulus = 1 / compliance;
-    c->stiffness = 4 * c->effective_modulus * sqrt(c->effective_radius) / 3;
-    return viscor_dk_representable(c->effective_mass) && viscor_dk_representable(c->effective_radius) &&
-           viscor_dk_representable(c->stiffness);
-}
-
 static const char* viscor_dk_law(viscor_dem_model model) {
     switch (model) {
     case VISCOR_LAMMPS_VELOCITY: case VISCOR_LAMMPS_MASS_VELOCITY: return "hertz_linear_damping";
@@ -889,7 +854,7 @@ static viscor_deck viscor_dk_full_deck(viscor_dem_model model, double e_target, 
 viscor_contact viscor_contact_of(const viscor_dem_impact* impact) {
     viscor_contact out;
     viscor_dk_contact c;
-    if (!viscor_dk_valid_impact(VISCOR_LAMMPS_VELOCITY, impact) || !viscor_dk_cor_contact(impact, &c)) {
+    if (!viscor_dk_valid_impact(VISCOR_LAMMPS_VELOCITY, impact) || !viscor_dk_make_contact(impact, &c)) {
         out.valid = 0;
         out.effective_modulus = out.effective_radius = out.mass = out.stiffness = out.gravity = NAN;
         return out;
@@ -8797,4 +8762,4 @@ const viscor_surrogate* viscor_surrogate_named(const char* law) {
     if (law && viscor_sg_names_equal(law, "hunt_crossley")) return &viscor_surrogate_hunt_crossley;
     return 0;
 }
-/* viscor sha256 21158426c8df5b10e209886920fc1ffedc8fb69dc9d50add7276416ed9fd77ed */
+/* viscor sha256 e3738d2dca9b985ccc13c50c98fccc4abdaf4a9ed419a015cfa90f36592654f4 */

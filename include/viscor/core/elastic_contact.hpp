@@ -37,6 +37,8 @@ struct elastic_material {
 
   /// (1 - nu^2) / E, the body's share of 1/E*.
   Real compliance() const { return (1 - poisson_ratio * poisson_ratio) / youngs_modulus; }
+  /// E / (1 - nu^2): E* against a rigid body (one rounding fewer than 1 / compliance()).
+  Real plane_strain_modulus() const { return youngs_modulus / (1 - poisson_ratio * poisson_ratio); }
 };
 
 /// E* of two bodies; a rigid partner (nullopt) contributes nothing.
@@ -68,8 +70,54 @@ Real hertz_stiffness(const Real& effective_modulus_, const Real& effective_radiu
 
 /// Mass of a sphere: rho (4/3) pi R^3.
 template <class Real>
-Real sphere_mass(const Real& density, const Real& radius) {
-  return 4 * boost::math::constants::pi<Real>() * density * radius * radius * radius / 3;
+Real sphere_mass(const Real& density, const Real& radius) {  // NOTE: this order is the DEM decks' since their first release
+  return 4 * boost::math::constants::pi<Real>() * radius * radius * radius * density / 3;
+}
+
+/// A sphere in a Hertz contact: its elastic constants, radius (m) and mass (kg).
+template <class Real>
+struct elastic_sphere {
+  elastic_material<Real> material;
+  Real radius = 0;
+  Real mass = 0;
+};
+
+/// The effective quantities of a Hertz contact: E* (Pa), R* (m), m* (kg) and k (N/m^(3/2)).
+template <class Real>
+struct hertz_effective {
+  Real modulus = 0;
+  Real radius = 0;
+  Real mass = 0;
+  Real stiffness = 0;
+};
+
+/// The contact of `sphere` with a flat wall of material `wall` (nullopt: rigid). Every
+/// command computes a material's contact here, so the same materials give the same bits.
+template <class Real>
+hertz_effective<Real> hertz_with_wall(const elastic_sphere<Real>& sphere, const std::optional<elastic_material<Real>>& wall) {
+  hertz_effective<Real> h;
+  h.modulus = wall ? effective_modulus(sphere.material, wall) : sphere.material.plane_strain_modulus();
+  h.radius = sphere.radius;
+  h.mass = sphere.mass;
+  h.stiffness = hertz_stiffness(h.modulus, h.radius);
+  return h;
+}
+
+/// The contact of `sphere` with a second sphere (nullopt: one like it): the relative motion.
+template <class Real>
+hertz_effective<Real> hertz_with_sphere(const elastic_sphere<Real>& sphere, const std::optional<elastic_sphere<Real>>& other) {
+  hertz_effective<Real> h;
+  if (other) {
+    h.modulus = effective_modulus(sphere.material, std::optional<elastic_material<Real>>(other->material));
+    h.radius = effective_radius(sphere.radius, std::optional<Real>(other->radius));
+    h.mass = reduced_mass(sphere.mass, std::optional<Real>(other->mass));
+  } else {  // the same values as with a copy of the sphere, with fewer roundings
+    h.modulus = sphere.material.plane_strain_modulus() / 2;
+    h.radius = sphere.radius / 2;
+    h.mass = sphere.mass / 2;
+  }
+  h.stiffness = hertz_stiffness(h.modulus, h.radius);
+  return h;
 }
 
 }  // namespace viscor

@@ -54,12 +54,13 @@ struct bead_material {
   }
 
   /// The bead's mass 4/3 pi R^3 rho, kg.
-  Real mass() const {  // NOTE: this order of operations since the first release: decks stay bit-identical
-    return 4 * boost::math::constants::pi<Real>() * radius * radius * radius * density / 3;
-  }
+  Real mass() const { return sphere_mass(density, radius); }
 
   /// Its elastic constants.
   elastic_material<Real> elastic() const { return {youngs_modulus, poisson_ratio}; }
+
+  /// It as a sphere of a Hertz contact.
+  elastic_sphere<Real> sphere() const { return {elastic(), radius, mass()}; }
 };
 
 /// What the bead meets besides itself: the wall's material on a wall (none: rigid),
@@ -100,22 +101,18 @@ hertz_contact<Real> make_hertz_contact(const bead_material<Real>& bead, contact_
                                        const contact_partner<Real>& partner = {}) {
   bead.validate();
   partner.validate(kind);
-  const bool wall = kind == contact_kind::wall;
   hertz_contact<Real> c;
   c.kind = kind;
-  c.bead_mass = bead.mass();
-  if (partner.wall || partner.other) {
-    const std::optional<bead_material<Real>>& other = partner.other;
-    c.effective_modulus = effective_modulus(bead.elastic(), wall ? partner.wall : std::optional(other->elastic()));
-    c.effective_radius = effective_radius(bead.radius, wall ? std::nullopt : std::optional(other->radius));
-    c.effective_mass = reduced_mass(c.bead_mass, wall ? std::nullopt : std::optional(other->mass()));
-  } else {  // a rigid wall or a bead like this one: the same values with fewer roundings
-    const Real plane_strain_modulus = bead.youngs_modulus / (1 - bead.poisson_ratio * bead.poisson_ratio);
-    c.effective_modulus = wall ? plane_strain_modulus : Real(plane_strain_modulus / 2);
-    c.effective_radius = wall ? bead.radius : Real(bead.radius / 2);
-    c.effective_mass = wall ? c.bead_mass : Real(c.bead_mass / 2);
-  }
-  c.stiffness = hertz_stiffness(c.effective_modulus, c.effective_radius);
+  const elastic_sphere<Real> sphere = bead.sphere();
+  c.bead_mass = sphere.mass;
+  std::optional<elastic_sphere<Real>> other;
+  if (partner.other) other = partner.other->sphere();
+  const hertz_effective<Real> h =
+      kind == contact_kind::wall ? hertz_with_wall(sphere, partner.wall) : hertz_with_sphere(sphere, other);
+  c.effective_modulus = h.modulus;
+  c.effective_radius = h.radius;
+  c.effective_mass = h.mass;
+  c.stiffness = h.stiffness;
   const std::string from = "radius = " + to_decimal_string(bead.radius) + ", density = " +
                            to_decimal_string(bead.density) + ", youngs_modulus = " +
                            to_decimal_string(bead.youngs_modulus);

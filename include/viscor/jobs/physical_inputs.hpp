@@ -64,13 +64,12 @@ std::pair<Real, Real> bead_of_material(const contact_law& law, const Real& young
     require_positive(*density, "density");
     m = sphere_mass(*density, radius);
   }
-  if (kind == dem::contact_kind::wall)
-    return {m, hertz_stiffness(effective_modulus<Real>(material, partner.wall), radius)};
-  const std::optional<dem::bead_material<Real>>& other = partner.other;
-  const Real other_mass = other ? other->mass() : m;
-  const Real modulus = effective_modulus<Real>(material, other ? other->elastic() : material);
-  const Real r = effective_radius<Real>(radius, other ? other->radius : radius);
-  return {reduced_mass<Real>(m, other_mass), hertz_stiffness(modulus, r)};
+  const elastic_sphere<Real> sphere{material, radius, m};
+  std::optional<elastic_sphere<Real>> other;
+  if (partner.other) other = partner.other->sphere();
+  const hertz_effective<Real> h =
+      kind == dem::contact_kind::wall ? hertz_with_wall(sphere, partner.wall) : hertz_with_sphere(sphere, other);
+  return {h.mass, h.stiffness};
 }
 
 /// The physical inputs as text, with their completeness and unit checks.

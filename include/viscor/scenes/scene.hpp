@@ -153,25 +153,26 @@ resolved_scene<Real> resolve_scene(const scene_description& d) {
                                  scene_number<Real>(d.wall_poisson_ratio, "wall.poisson_ratio")};
       w->validate("wall");
     }
-    s.mass = sphere_mass(density, radius);
+    const elastic_sphere<Real> sphere{bead, radius, sphere_mass(density, radius)};
+    hertz_effective<Real> h;
     if (d.pair) {  // the relative motion of the two beads: E*, R*, m* of the pair
-      elastic_material<Real> second = bead;
-      Real second_radius = radius, second_mass = s.mass;
+      std::optional<elastic_sphere<Real>> second;
       if (other) {
-        second = {scene_number<Real>(d.other_youngs_modulus, "other.youngs_modulus"),
-                  scene_number<Real>(d.other_poisson_ratio, "other.poisson_ratio")};
-        second.validate("other");
-        second_radius = scene_number<Real>(d.other_radius, "other.radius");
+        elastic_material<Real> material{scene_number<Real>(d.other_youngs_modulus, "other.youngs_modulus"),
+                                        scene_number<Real>(d.other_poisson_ratio, "other.poisson_ratio")};
+        material.validate("other");
+        const Real second_radius = scene_number<Real>(d.other_radius, "other.radius");
         const Real second_density = scene_number<Real>(d.other_density, "other.density");
         require_positive(second_radius, "other.radius");
         require_positive(second_density, "other.density");
-        second_mass = sphere_mass(second_density, second_radius);
+        second = elastic_sphere<Real>{material, second_radius, sphere_mass(second_density, second_radius)};
       }
-      s.stiffness = hertz_stiffness(effective_modulus<Real>(bead, second), effective_radius<Real>(radius, second_radius));
-      s.mass = reduced_mass<Real>(s.mass, second_mass);
+      h = hertz_with_sphere(sphere, second);
     } else {
-      s.stiffness = hertz_stiffness(effective_modulus(bead, w), radius);
+      h = hertz_with_wall(sphere, w);
     }
+    s.mass = h.mass;
+    s.stiffness = h.stiffness;
     s.stiffness_from_material = true;
   }
 
